@@ -1,0 +1,65 @@
+#pragma once
+// The compiled, constant description of a simulation: every default resolved, every derived value
+// computed. No YAML here; scenarios/ builds it, engine/ runs it.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/materials.hpp"
+#include "engine/rod_shape.hpp"
+
+namespace rodsort::engine {
+
+/// Vertical drive of base and lid: z_base(t) = amplitude cos(2 pi frequency t), z_lid = z_base + gap.
+struct Drive {
+  double frequency;  ///< [Hz], paper: 200
+  double amplitude;  ///< [mm], paper: Gamma = 7 -> 0.0435
+  double gap;        ///< lid height above base [mm], paper: 1.2
+
+  /// Amplitude from the dimensionless acceleration Gamma = A (2 pi f)^2 / g.
+  static double amplitude_from_gamma(double gamma, double frequency);
+  double gamma() const;
+};
+
+struct Noise {
+  double kick_eps = 0.0;  ///< collision kick: omega_z += s eps v_rel at base/lid impacts [1/mm]
+  double white_Dr = 0.0;  ///< white angular noise, rotational diffusion coefficient [rad^2/s]
+};
+
+struct Species {
+  std::string name;
+  RodShape shape;
+  Noise noise;
+  int material = MaterialTable::kFirstRod;  ///< index into Model::materials
+};
+
+/// Initial condition of one rod, resting on the base plate.
+struct RodInit {
+  int species;     ///< index into Model::species
+  double x, y;     ///< centre of mass in the cell [mm]
+  double heading;  ///< direction from the thick to the thin end, in the plane [rad]
+};
+
+/// A static vertical wall spanning the gap (trap arms and other obstacles), a box in 3D.
+struct Wall {
+  double center_x, center_y;  ///< [mm]
+  double half_length;         ///< along the wall [mm]
+  double half_thickness;      ///< across the wall [mm]
+  double yaw;                 ///< direction of the wall's length in the plane [rad]
+  int material = MaterialTable::kWall;
+};
+
+struct Model {
+  double box_x = 0.0, box_y = 0.0;  ///< periodic cell [0, box_x) x [0, box_y) [mm]
+  Drive drive{};
+  std::vector<Species> species;
+  std::vector<RodInit> rods;
+  std::vector<Wall> walls;
+  MaterialTable materials = MaterialTable::paper();
+  double dt = 1.0e-4;  ///< time step [s]
+  std::uint64_t seed = 1;
+  int solver_iterations = 10;
+};
+
+}  // namespace rodsort::engine

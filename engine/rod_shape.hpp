@@ -1,0 +1,48 @@
+#pragma once
+// A rod is a union of spheres centred on its axis. Its mass, centre of mass and inertia are those
+// of the union (overlaps counted once), not the sum of the spheres.
+
+#include <string>
+#include <vector>
+
+namespace rodsort::engine {
+
+/// One sphere of a rod profile.
+struct Sphere {
+  double axial;   ///< position of the centre on the rod axis [mm]; grows from the thick to the thin end
+  double radius;  ///< [mm]
+};
+
+/// The spheres of a rod, in any axial frame (the shape recentres them on the centre of mass).
+struct RodProfile {
+  std::vector<Sphere> spheres;
+};
+
+/// Paper rod A: 9 spheres, radii linear 0.55 -> 0.20 mm, 4.5 mm tip to tip.
+RodProfile preset_a_profile();
+/// Paper RnT rod: 3.5 mm tip to tip, thick half r = 0.55 mm, thin half r = thin_radius.
+RodProfile preset_rnt_profile(double thin_radius = 0.3);
+/// `sphere_count` spheres, radii linear from thick_radius to thin_radius, `length` tip to tip [mm].
+RodProfile linear_taper_profile(double length, double thick_radius, double thin_radius,
+                                int sphere_count);
+
+/// A rod ready for the engine: spheres relative to the centre of mass, and the mass properties of
+/// their union.
+struct RodShape {
+  std::vector<Sphere> spheres;  ///< axial positions measured from the centre of mass [mm]
+  double density;               ///< [g/mm^3]
+  double volume;                ///< of the union [mm^3]
+  double mass;                  ///< [g]
+  double inertia_axial;         ///< about the axis through the centre of mass [g mm^2]
+  double inertia_transverse;    ///< about any perpendicular axis through the centre of mass [g mm^2]
+  double projected_area;        ///< area of the 2D projection on the plate (union of discs) [mm^2]
+  double length;                ///< tip to tip [mm]
+  double max_radius;            ///< largest sphere radius [mm]
+  double thick_tip;             ///< axial position of the thick tip, from the centre of mass [mm] (<0)
+  double thin_tip;              ///< axial position of the thin tip, from the centre of mass [mm] (>0)
+};
+
+/// Computes the union's mass properties and recentres the profile on its centre of mass.
+RodShape make_rod_shape(const RodProfile& profile, double density);
+
+}  // namespace rodsort::engine

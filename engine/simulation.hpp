@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+#include "engine/frame.hpp"
+#include "engine/model.hpp"
+#include "engine/state.hpp"
+
+namespace rodsort::engine {
+
+/// Counters of what the engine did, for tests and diagnostics.
+struct SimulationCounters {
+  std::int64_t kicks = 0;  ///< collision kicks applied (events of a rod hitting base or lid)
+};
+
+/// A Bullet world built from a Model, stepped with the Model's fixed dt.
+class Simulation {
+ public:
+  explicit Simulation(Model model);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  void step();
+  void advance(std::int64_t steps);
+
+  double time() const;  ///< [s]
+  std::int64_t step_count() const;
+  const Model& model() const;
+  Frame frame() const;
+  SimulationCounters counters() const;
+
+  State state() const;
+  void restore(const State& state);
+
+  /// Heights of the plates' top (base) and bottom (lid) surfaces at the current time [mm].
+  double base_surface_z() const;
+  double lid_surface_z() const;
+
+  /// Writes the Bullet world (shapes, poses, contacts) as a .bullet file.
+  void write_bullet_snapshot(const std::filesystem::path& path) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rodsort::engine
