@@ -1,0 +1,244 @@
+// Mass properties of a union of spheres centred on one axis.
+//
+// The paper models a rod as overlapping spheres. Adding the spheres' masses would count every
+// overlap twice (for rod A about 30% too heavy), so the mass, centre of mass and inertia here are
+// those of the union. Because every sphere is centred on the axis, a slice of the union at axial
+// coordinate s is a single disc of radius R(s), with
+//
+//   R(s)^2 = max_i f_i(s),   f_i(s) = r_i^2 - (s - a_i)^2   (where positive),
+//
+// and every mass property is a one-dimensional integral over s. All f_i share the same leading
+// term -s^2, so f_i - f_j is linear in s: two spheres swap dominance at most once. Cutting the axis
+// at every sphere end (a_i +- r_i) and at every pairwise crossing leaves pieces on which a single
+// sphere dominates (or none: a gap between disjoint spheres). On such a piece R^2 is a quadratic in
+// s, so the volume, first and second moments are polynomials of degree at most 4, integrated
+// exactly by 3-point Gauss-Legendre; the projected width 2 R(s) has a closed-form antiderivative.
+// The result is exact up to rounding, for any number of spheres, overlapping or not.
+
+#include "engine/rod_shape.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "engine/units.hpp"
+
+namespace rodsort::engine {
+
+namespace {
+
+/// Spheres placed for a step profile are at most this far apart, in units of their radius: the
+/// outline between two neighbours then dips by at most 10% of the radius
+/// (1 - sqrt(1 - (0.872 / 2)^2) = 0.10), about as deep as between rod A's thick spheres.
+constexpr double kMaxSpacingOverRadius = 0.872;
+
+/// A stretch of the axis [begin, end] on which one sphere bounds the union.
+struct Piece {
+  double begin;  ///< [mm]
+  double end;    ///< [mm]
+  Sphere sphere;
+};
+
+double squared_section_radius(const Sphere& sphere, double axial) {
+  const double offset = axial - sphere.axial;
+  return sphere.radius * sphere.radius - offset * offset;
+}
+
+/// Cuts the axis into pieces on each of which one sphere is the outermost; gaps are left out.
+std::vector<Piece> union_pieces(const std::vector<Sphere>& spheres) {
+  std::vector<double> cuts;
+  for (const Sphere& sphere : spheres) {
+    cuts.push_back(sphere.axial - sphere.radius);
+    cuts.push_back(sphere.axial + sphere.radius);
+  }
+  const double first = *std::min_element(cuts.begin(), cuts.end());
+  const double last = *std::max_element(cuts.begin(), cuts.end());
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    for (std::size_t j = i + 1; j < spheres.size(); ++j) {
+      const Sphere& p = spheres[i];
+      const Sphere& q = spheres[j];
+      if (p.axial == q.axial) continue;  // concentric: one contains the other everywhere
+      // f_p(s) = f_q(s) is linear in s.
+      const double crossing =
+          (p.radius * p.radius - q.radius * q.radius - p.axial * p.axial + q.axial * q.axial) /
+          (2.0 * (q.axial - p.axial));
+      if (crossing > first && crossing < last) cuts.push_back(crossing);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+
+  std::vector<Piece> pieces;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double middle = 0.5 * (cuts[k] + cuts[k + 1]);
+    const Sphere* outermost = nullptr;
+    double best = 0.0;
+    for (const Sphere& sphere : spheres) {
+      const double value = squared_section_radius(sphere, middle);
+      if (value > best) {
+        best = value;
+        outermost = &sphere;
+      }
+    }
+    if (outermost == nullptr) continue;  // a gap between disjoint spheres
+    if (!pieces.empty() && pieces.back().end == cuts[k] &&
+        pieces.back().sphere.axial == outermost->axial &&
+        pieces.back().sphere.radius == outermost->radius) {
+      pieces.back().end = cuts[k + 1];
+    } else {
+      pieces.push_back({cuts[k], cuts[k + 1], *outermost});
+    }
+  }
+  return pieces;
+}
+
+/// Integral of integrand(s, R^2(s)) over the union; exact for polynomials of degree <= 5 in s.
+template <typename Integrand>
+double integrate(const std::vector<Piece>& pieces, Integrand integrand) {
+  static const double kNode = std::sqrt(3.0 / 5.0);
+  static constexpr std::array<double, 3> kWeights = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  const std::array<double, 3> nodes = {-kNode, 0.0, kNode};
+  double total = 0.0;
+  for (const Piece& piece : pieces) {
+    const double half = 0.5 * (piece.end - piece.begin);
+    const double middle = 0.5 * (piece.end + piece.begin);
+    double sum = 0.0;
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      const double axial = middle + half * nodes[n];
+      sum += kWeights[n] * integrand(axial, squared_section_radius(piece.sphere, axial));
+    }
+    total += half * sum;
+  }
+  return total;
+}
+
+/// Area of the union's outline in a plane through the axis: the integral of 2 R(s).
+double projected_area(const std::vector<Piece>& pieces) {
+  double area = 0.0;
+  for (const Piece& piece : pieces) {
+    const double radius = piece.sphere.radius;
+    // Antiderivative of 2 sqrt(r^2 - u^2) in u = s - a. The tips sit where the square root is
+    // steep, so the half-chord is taken as sqrt((r - u)(r + u)) and the angle by atan2: the
+    // rounding of a piece's ends then stays at rounding level in the area.
+    const auto primitive = [radius](double u) {
+      u = std::clamp(u, -radius, radius);
+      const double half_chord = std::sqrt((radius - u) * (radius + u));
+      return u * half_chord + radius * radius * std::atan2(u, half_chord);
+    };
+    area += primitive(piece.end - piece.sphere.axial) - primitive(piece.begin - piece.sphere.axial);
+  }
+  return area;
+}
+
+/// Adds spheres of one radius, centres evenly spread from first to last [mm], no further apart
+/// than kMaxSpacingOverRadius radii.
+void add_evenly_spaced(std::vector<Sphere>& spheres, double first, double last, double radius) {
+  const double span = last - first;
+  const int intervals =
+      std::max(1, static_cast<int>(std::ceil(span / (kMaxSpacingOverRadius * radius) - 1e-12)));
+  for (int k = 0; k <= intervals; ++k) {
+    spheres.push_back({first + span * k / intervals, radius});
+  }
+}
+
+}  // namespace
+
+RodProfile linear_taper_profile(double length, double thick_radius, double thin_radius,
+                                int sphere_count) {
+  if (!(thick_radius > 0.0) || !(thin_radius > 0.0)) {
+    throw std::invalid_argument("linear_taper_profile: radii must be positive, got " +
+                                std::to_string(thick_radius) + " and " +
+                                std::to_string(thin_radius));
+  }
+  if (sphere_count < 2) {
+    throw std::invalid_argument("linear_taper_profile: needs at least 2 spheres, got " +
+                                std::to_string(sphere_count));
+  }
+  // The end spheres' far sides are the tips only if no inner sphere pokes past them, i.e. the
+  // radius changes no faster than the centres move.
+  const double span = length - thick_radius - thin_radius;
+  if (!(span > 0.0) || std::abs(thick_radius - thin_radius) > span) {
+    throw std::invalid_argument("linear_taper_profile: length " + std::to_string(length) +
+                                " mm is too short for end radii " + std::to_string(thick_radius) +
+                                " and " + std::to_string(thin_radius) + " mm");
+  }
+  RodProfile profile;
+  for (int k = 0; k < sphere_count; ++k) {
+    const double fraction = static_cast<double>(k) / (sphere_count - 1);
+    profile.spheres.push_back(
+        {thick_radius + span * fraction, thick_radius + (thin_radius - thick_radius) * fraction});
+  }
+  return profile;
+}
+
+RodProfile preset_a_profile() { return linear_taper_profile(4.5, 0.55, 0.20, 9); }
+
+RodProfile preset_rnt_profile(double thin_radius) {
+  constexpr double kLength = 3.5;        // tip to tip [mm]
+  constexpr double kThickRadius = 0.55;  // [mm]
+  constexpr double kStep = 0.5 * kLength;
+  if (!(thin_radius > 0.0) || thin_radius > kThickRadius) {
+    throw std::invalid_argument("preset_rnt_profile: thin radius must be in (0, 0.55] mm, got " +
+                                std::to_string(thin_radius));
+  }
+  // The step sits at mid-length: the last thick sphere is placed so that its outline comes down to
+  // the thin radius exactly there, and the first thin sphere is centred there, so the two meet at
+  // the step and the thick half keeps its full radius as far as spheres allow.
+  RodProfile profile;
+  const double last_thick =
+      kStep - std::sqrt(kThickRadius * kThickRadius - thin_radius * thin_radius);
+  add_evenly_spaced(profile.spheres, kThickRadius, last_thick, kThickRadius);
+  add_evenly_spaced(profile.spheres, kStep, kLength - thin_radius, thin_radius);
+  return profile;
+}
+
+RodShape make_rod_shape(const RodProfile& profile, double density) {
+  if (profile.spheres.empty()) {
+    throw std::invalid_argument("make_rod_shape: the profile has no spheres");
+  }
+  for (const Sphere& sphere : profile.spheres) {
+    if (!(sphere.radius > 0.0) || !std::isfinite(sphere.radius) || !std::isfinite(sphere.axial)) {
+      throw std::invalid_argument("make_rod_shape: sphere at " + std::to_string(sphere.axial) +
+                                  " mm has radius " + std::to_string(sphere.radius) +
+                                  " mm; radii must be positive and finite");
+    }
+  }
+  if (!(density > 0.0) || !std::isfinite(density)) {
+    throw std::invalid_argument("make_rod_shape: density must be positive, got " +
+                                std::to_string(density));
+  }
+
+  const std::vector<Piece> pieces = union_pieces(profile.spheres);
+  const double volume = integrate(pieces, [](double, double r2) { return kPi * r2; });
+  const double center =
+      integrate(pieces, [](double s, double r2) { return kPi * r2 * s; }) / volume;
+  const double axial_moment =
+      integrate(pieces, [](double, double r2) { return 0.5 * kPi * r2 * r2; });
+  const double transverse_moment = integrate(pieces, [center](double s, double r2) {
+    return kPi * (0.25 * r2 * r2 + r2 * (s - center) * (s - center));
+  });
+
+  RodShape shape{};
+  shape.density = density;
+  shape.volume = volume;
+  shape.mass = density * volume;
+  shape.inertia_axial = density * axial_moment;
+  shape.inertia_transverse = density * transverse_moment;
+  shape.projected_area = projected_area(pieces);
+  shape.thick_tip = std::numeric_limits<double>::infinity();
+  shape.thin_tip = -std::numeric_limits<double>::infinity();
+  shape.max_radius = 0.0;
+  for (const Sphere& sphere : profile.spheres) {
+    const Sphere centred{sphere.axial - center, sphere.radius};
+    shape.spheres.push_back(centred);
+    shape.thick_tip = std::min(shape.thick_tip, centred.axial - centred.radius);
+    shape.thin_tip = std::max(shape.thin_tip, centred.axial + centred.radius);
+    shape.max_radius = std::max(shape.max_radius, centred.radius);
+  }
+  shape.length = shape.thin_tip - shape.thick_tip;
+  return shape;
+}
+
+}  // namespace rodsort::engine

@@ -1,0 +1,227 @@
+#include "engine/rod_shape.hpp"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/units.hpp"
+
+using rodsort::kBrassDensity;
+using rodsort::kPi;
+using namespace rodsort::engine;
+
+namespace {
+
+double sphere_volume(double radius) { return 4.0 / 3.0 * kPi * radius * radius * radius; }
+
+/// Volume of a spherical cap of height `height` cut from a sphere of radius `radius`.
+double cap_volume(double radius, double height) {
+  return kPi * height * height * (3.0 * radius - height) / 3.0;
+}
+
+/// Distance from the sphere's centre to the centroid of that cap.
+double cap_centroid(double radius, double height) {
+  return 3.0 * (2.0 * radius - height) * (2.0 * radius - height) / (4.0 * (3.0 * radius - height));
+}
+
+}  // namespace
+
+TEST_CASE("one sphere has the closed-form mass properties", "[rod_shape]") {
+  const double radius = 0.7;
+  const RodShape shape = make_rod_shape({{{2.5, radius}}}, 2.0);
+  const double mass = 2.0 * sphere_volume(radius);
+  CHECK(shape.volume == Approx(sphere_volume(radius)).epsilon(1e-12));
+  CHECK(shape.mass == Approx(mass).epsilon(1e-12));
+  CHECK(shape.inertia_axial == Approx(0.4 * mass * radius * radius).epsilon(1e-12));
+  CHECK(shape.inertia_transverse == Approx(0.4 * mass * radius * radius).epsilon(1e-12));
+  CHECK(shape.projected_area == Approx(kPi * radius * radius).epsilon(1e-12));
+  REQUIRE(shape.spheres.size() == 1);
+  CHECK(shape.spheres[0].axial == Approx(0.0).margin(1e-12));
+  CHECK(shape.length == Approx(2.0 * radius));
+  CHECK(shape.thick_tip == Approx(-radius));
+  CHECK(shape.thin_tip == Approx(radius));
+  CHECK(shape.max_radius == radius);
+}
+
+TEST_CASE("two disjoint spheres add up with the parallel-axis theorem", "[rod_shape]") {
+  const double big = 0.5, small = 0.3, distance = 2.0;
+  const RodShape shape = make_rod_shape({{{1.0, big}, {1.0 + distance, small}}}, 1.0);
+  const double big_mass = sphere_volume(big), small_mass = sphere_volume(small);
+  const double mass = big_mass + small_mass;
+  const double com_from_big = small_mass * distance / mass;
+  CHECK(shape.mass == Approx(mass).epsilon(1e-12));
+  CHECK(shape.spheres[0].axial == Approx(-com_from_big).epsilon(1e-12));
+  CHECK(shape.spheres[1].axial == Approx(distance - com_from_big).epsilon(1e-12));
+  const double own = 0.4 * (big_mass * big * big + small_mass * small * small);
+  CHECK(shape.inertia_axial == Approx(own).epsilon(1e-12));
+  const double shifted = big_mass * com_from_big * com_from_big +
+                         small_mass * (distance - com_from_big) * (distance - com_from_big);
+  CHECK(shape.inertia_transverse == Approx(own + shifted).epsilon(1e-12));
+  CHECK(shape.projected_area == Approx(kPi * (big * big + small * small)).epsilon(1e-12));
+  CHECK(shape.length == Approx(distance + big + small));
+  CHECK(shape.thick_tip == Approx(-com_from_big - big));
+}
+
+TEST_CASE("two overlapping equal spheres count their lens once", "[rod_shape]") {
+  const double radius = 0.5, distance = 0.6;
+  const RodShape shape = make_rod_shape({{{0.0, radius}, {distance, radius}}}, 1.0);
+  const double lens_volume = kPi * (4.0 * radius + distance) * (2.0 * radius - distance) *
+                             (2.0 * radius - distance) / 12.0;
+  CHECK(shape.volume == Approx(2.0 * sphere_volume(radius) - lens_volume).epsilon(1e-12));
+  const double lens_area = 2.0 * radius * radius * std::acos(distance / (2.0 * radius)) -
+                           0.5 * distance * std::sqrt(4.0 * radius * radius - distance * distance);
+  CHECK(shape.projected_area == Approx(2.0 * kPi * radius * radius - lens_area).epsilon(1e-12));
+  CHECK(shape.spheres[0].axial == Approx(-0.5 * distance).epsilon(1e-12));
+  CHECK(shape.spheres[1].axial == Approx(0.5 * distance).epsilon(1e-12));
+}
+
+TEST_CASE("a sphere inside another adds nothing", "[rod_shape]") {
+  const RodShape alone = make_rod_shape({{{0.0, 0.6}}}, 1.0);
+  const RodShape nested = make_rod_shape({{{0.0, 0.6}, {0.2, 0.3}, {0.0, 0.6}}}, 1.0);
+  CHECK(nested.volume == Approx(alone.volume).epsilon(1e-12));
+  CHECK(nested.inertia_transverse == Approx(alone.inertia_transverse).epsilon(1e-12));
+  CHECK(nested.projected_area == Approx(alone.projected_area).epsilon(1e-12));
+}
+
+TEST_CASE("a dense chain of tapered spheres approaches the envelope cone with spherical ends",
+          "[rod_shape]") {
+  // Spheres with centres a and radii r(a) = r0 + k (a - a0), |k| < 1, packed densely, fill the
+  // envelope of the family: a cone whose radius at s is r(s) / sqrt(1 - k^2), touching the end
+  // spheres at s = a - k r, closed by the end spheres beyond those planes. (The frustum with the
+  // spheres' own radii and hemispherical ends is 0.7% smaller here: it is not the limit.)
+  const double length = 4.5, thick = 0.55, thin = 0.20;
+  const int count = 301;
+  const RodShape shape = make_rod_shape(linear_taper_profile(length, thick, thin, count), 1.0);
+
+  const double a0 = thick, a1 = length - thin;
+  const double k = (thin - thick) / (a1 - a0);
+  const double c = std::sqrt(1.0 - k * k);
+  const double s0 = a0 - k * thick, s1 = a1 - k * thin;
+  const double rho0 = thick * c, rho1 = thin * c;
+  const double thick_cap_height = thick * (1.0 - k), thin_cap_height = thin * (1.0 + k);
+
+  const double h = s1 - s0;
+  const double frustum_sum = rho0 * rho0 + rho0 * rho1 + rho1 * rho1;
+  const double frustum_volume = kPi * h * frustum_sum / 3.0;
+  const double frustum_centroid =
+      s0 + h * (rho0 * rho0 + 2.0 * rho0 * rho1 + 3.0 * rho1 * rho1) / (4.0 * frustum_sum);
+  const double thick_cap = cap_volume(thick, thick_cap_height);
+  const double thin_cap = cap_volume(thin, thin_cap_height);
+  const double volume = frustum_volume + thick_cap + thin_cap;
+  const double centroid = (frustum_volume * frustum_centroid +
+                           thick_cap * (a0 - cap_centroid(thick, thick_cap_height)) +
+                           thin_cap * (a1 + cap_centroid(thin, thin_cap_height))) /
+                          volume;
+
+  // The envelope's second moments, integrated finely from its closed-form radius.
+  const auto envelope_squared_radius = [&](double s) {
+    if (s < s0) return thick * thick - (s - a0) * (s - a0);
+    if (s > s1) return thin * thin - (s - a1) * (s - a1);
+    const double r = (thick + k * (s - a0)) / c;
+    return r * r;
+  };
+  const int slices = 200000;
+  const double ds = length / slices;
+  double axial = 0.0, transverse = 0.0, area = 0.0;
+  for (int n = 0; n < slices; ++n) {
+    const double s = (n + 0.5) * ds;
+    const double r2 = envelope_squared_radius(s);
+    area += 2.0 * std::sqrt(std::max(0.0, r2)) * ds;
+    axial += 0.5 * kPi * r2 * r2 * ds;
+    transverse += kPi * (0.25 * r2 * r2 + r2 * (s - centroid) * (s - centroid)) * ds;
+  }
+
+  // The chain's outline dips between neighbouring spheres by about spacing^2 / (8 r) < 1e-4 mm
+  // here, which leaves every property about 1e-4 short of the envelope's (it converges as
+  // 1 / count^2); 1e-3 is the tolerance.
+  CHECK(shape.volume == Approx(volume).epsilon(1e-3));
+  CHECK(shape.volume < volume);
+  CHECK(-shape.thick_tip == Approx(centroid).epsilon(1e-3));
+  CHECK(shape.inertia_axial == Approx(axial).epsilon(1e-3));
+  CHECK(shape.inertia_transverse == Approx(transverse).epsilon(1e-3));
+  CHECK(shape.projected_area == Approx(area).epsilon(1e-3));
+}
+
+TEST_CASE("shapes do not depend on the profile's axial frame", "[rod_shape]") {
+  RodProfile shifted = preset_a_profile();
+  for (Sphere& sphere : shifted.spheres) sphere.axial -= 7.0;
+  const RodShape reference = make_rod_shape(preset_a_profile(), kBrassDensity);
+  const RodShape moved = make_rod_shape(shifted, kBrassDensity);
+  const RodShape recentred = make_rod_shape({reference.spheres}, kBrassDensity);
+  for (const RodShape* other : {&moved, &recentred}) {
+    CHECK(other->mass == Approx(reference.mass).epsilon(1e-12));
+    CHECK(other->inertia_transverse == Approx(reference.inertia_transverse).epsilon(1e-12));
+    CHECK(other->thick_tip == Approx(reference.thick_tip).epsilon(1e-12));
+    for (std::size_t i = 0; i < reference.spheres.size(); ++i) {
+      CHECK(other->spheres[i].axial == Approx(reference.spheres[i].axial).margin(1e-12));
+    }
+  }
+}
+
+TEST_CASE("rod A has the paper's size and mass, heavier at the thick end", "[rod_shape]") {
+  const RodProfile profile = preset_a_profile();
+  REQUIRE(profile.spheres.size() == 9);
+  CHECK(profile.spheres.front().radius == Approx(0.55));
+  CHECK(profile.spheres.back().radius == Approx(0.20));
+  const RodShape shape = make_rod_shape(profile, kBrassDensity);
+  CHECK(shape.length == Approx(4.5));
+  CHECK(shape.max_radius == Approx(0.55));
+  CHECK(shape.volume == Approx(1.95).epsilon(0.01));
+  CHECK(shape.mass == Approx(16.5e-3).epsilon(0.01));
+  // The centre of mass lies toward the thick end, well short of mid-length.
+  CHECK(-shape.thick_tip < 0.4 * shape.length);
+  CHECK(shape.thin_tip - shape.thick_tip == Approx(shape.length));
+  // Axial positions grow from the thick to the thin end.
+  for (std::size_t i = 0; i + 1 < shape.spheres.size(); ++i) {
+    CHECK(shape.spheres[i].axial < shape.spheres[i + 1].axial);
+  }
+  // A slender body: the transverse inertia dominates.
+  CHECK(shape.inertia_transverse > 5.0 * shape.inertia_axial);
+}
+
+TEST_CASE("rod RnT steps from the thick to the thin radius at mid-length", "[rod_shape]") {
+  const RodProfile profile = preset_rnt_profile();
+  const RodShape shape = make_rod_shape(profile, kBrassDensity);
+  CHECK(shape.length == Approx(3.5));
+  CHECK(shape.max_radius == Approx(0.55));
+  CHECK(profile.spheres.front().axial - profile.spheres.front().radius ==
+        Approx(0.0).margin(1e-12));
+  CHECK(profile.spheres.back().radius == Approx(0.3));
+  // The thick half is as wide as the spheres allow up to mid-length, the thin half beyond.
+  for (const Sphere& sphere : profile.spheres) {
+    if (sphere.radius == Approx(0.55)) CHECK(sphere.axial < 1.75);
+    if (sphere.radius == Approx(0.3)) CHECK(sphere.axial >= 1.75 - 1e-12);
+  }
+  // Neighbours overlap: the rod is one piece.
+  for (std::size_t i = 0; i + 1 < profile.spheres.size(); ++i) {
+    const Sphere& p = profile.spheres[i];
+    const Sphere& q = profile.spheres[i + 1];
+    CHECK(q.axial - p.axial < 0.9 * (p.radius + q.radius));
+  }
+  // Close to the ideal stepped outline (two stadium halves), short of it by the dips between
+  // spheres and the rounded shoulder.
+  const double ideal_area = 0.5 * kPi * 0.55 * 0.55 + 2.0 * 0.55 * (1.75 - 0.55) +
+                            2.0 * 0.3 * (1.75 - 0.3) + 0.5 * kPi * 0.3 * 0.3;
+  CHECK(shape.projected_area < ideal_area);
+  CHECK(shape.projected_area > 0.95 * ideal_area);
+  CHECK(-shape.thick_tip < 0.5 * shape.length);
+
+  const RodShape thinner = make_rod_shape(preset_rnt_profile(0.25), kBrassDensity);
+  CHECK(thinner.length == Approx(3.5));
+  CHECK(thinner.mass < shape.mass);
+}
+
+TEST_CASE("invalid profiles and densities are rejected", "[rod_shape]") {
+  CHECK_THROWS_AS(make_rod_shape({}, kBrassDensity), std::invalid_argument);
+  CHECK_THROWS_AS(make_rod_shape({{{0.0, 0.0}}}, kBrassDensity), std::invalid_argument);
+  CHECK_THROWS_AS(make_rod_shape({{{0.0, 0.5}, {1.0, -0.2}}}, kBrassDensity),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(make_rod_shape({{{0.0, 0.5}}}, 0.0), std::invalid_argument);
+  CHECK_THROWS_AS(make_rod_shape({{{0.0, 0.5}}}, -1.0), std::invalid_argument);
+  CHECK_THROWS_AS(linear_taper_profile(4.5, 0.55, 0.2, 1), std::invalid_argument);
+  CHECK_THROWS_AS(linear_taper_profile(0.7, 0.55, 0.2, 9), std::invalid_argument);
+  CHECK_THROWS_AS(linear_taper_profile(4.5, 0.0, 0.2, 9), std::invalid_argument);
+  CHECK_THROWS_AS(preset_rnt_profile(0.0), std::invalid_argument);
+  CHECK_THROWS_AS(preset_rnt_profile(0.6), std::invalid_argument);
+}
