@@ -1,0 +1,16 @@
+#pragma once
+// Each subcommand lives in its own file: it declares its options on a CLI11 subcommand and returns
+// the action to run when that subcommand is chosen. A new subcommand (bench, render, ...) is a new
+// file and one line in main.cpp.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace rodsort::app {
+
+struct Command {
+  CLI::App* subcommand;
+  std::function<int()> action;  ///< returns the process's exit status (runner/exit_code.hpp)
+};
+
+}  // namespace rodsort::app

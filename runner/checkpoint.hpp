@@ -1,0 +1,33 @@
+#pragma once
+// checkpoint.bin: everything needed to continue a run exactly where it stopped. The engine's State
+// carries the physics; beside it the checkpoint records how long each growing output file was at
+// that instant, so that a resumed run cuts them back and they stay consistent with the state even
+// if the run wrote more frames before it was killed. Written atomically, so a crash while writing
+// one leaves the previous checkpoint.
+//
+// Layout: a text header of "key value" lines opened by "rodsort-checkpoint 1" and closed by a line
+// "state", followed by engine::write_state's bytes.
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "engine/state.hpp"
+
+namespace rodsort::runner {
+
+struct Checkpoint {
+  engine::State state;
+  std::map<std::string, std::uint64_t> file_bytes;  ///< output file name -> its size at the state
+  double wall_s = 0.0;  ///< wall-clock seconds spent on the run up to the state, over all sessions
+  double cpu_s = 0.0;   ///< CPU seconds spent on the run up to the state, over all sessions
+  int sessions = 1;     ///< processes that have worked on the run so far
+  std::string started_at;  ///< UTC, ISO 8601, when the first session started
+};
+
+void write_checkpoint(const std::filesystem::path& path, const Checkpoint& checkpoint);
+/// Throws std::runtime_error naming the file when it is missing, truncated or not a checkpoint.
+Checkpoint read_checkpoint(const std::filesystem::path& path);
+
+}  // namespace rodsort::runner

@@ -1,0 +1,51 @@
+#include "runner/lammps_dump.hpp"
+
+#include <cassert>
+#include <cstdio>
+
+namespace rodsort::runner {
+
+LammpsDumpFormatter::LammpsDumpFormatter(const engine::Model& model, double z_low, double z_high)
+    : rod_count_(model.rods.size()),
+      box_x_(model.box_x),
+      box_y_(model.box_y),
+      z_low_(z_low),
+      z_high_(z_high) {
+  for (const engine::Species& species : model.species) {
+    species_spheres_.push_back(species.shape.spheres);
+  }
+  for (const engine::RodInit& rod : model.rods) {
+    atom_count_ +=
+        static_cast<std::int64_t>(species_spheres_[static_cast<std::size_t>(rod.species)].size());
+  }
+}
+
+std::string LammpsDumpFormatter::format(const engine::Frame& frame, std::int64_t step) const {
+  assert(frame.rods.size() == rod_count_);
+  std::string text;
+  text.reserve(static_cast<std::size_t>(atom_count_) * 56 + 256);
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "ITEM: TIMESTEP\n%lld\nITEM: NUMBER OF ATOMS\n%lld\n"
+                "ITEM: BOX BOUNDS pp pp ff\n%.10g %.10g\n%.10g %.10g\n%.10g %.10g\n"
+                "ITEM: ATOMS id mol type x y z radius\n",
+                static_cast<long long>(step), static_cast<long long>(atom_count_), 0.0, box_x_, 0.0,
+                box_y_, z_low_, z_high_);
+  text += line;
+  long long atom_id = 1;
+  for (std::size_t rod = 0; rod < frame.rods.size(); ++rod) {
+    const engine::RodFrame& r = frame.rods[rod];
+    const auto& spheres = species_spheres_[static_cast<std::size_t>(r.species)];
+    for (const engine::Sphere& sphere : spheres) {
+      const double x = r.position.x() + sphere.axial * r.axis.x();
+      const double y = r.position.y() + sphere.axial * r.axis.y();
+      const double z = r.z + sphere.axial * r.axis.z();
+      std::snprintf(line, sizeof line, "%lld %zu %d %.5f %.5f %.5f %.4f\n", atom_id++, rod + 1,
+                    r.species + 1, x, y, z, sphere.radius);
+      text += line;
+    }
+  }
+  return text;
+}
+
+}  // namespace rodsort::runner

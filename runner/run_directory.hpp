@@ -1,0 +1,28 @@
+#pragma once
+// The names of the files in a run directory (DESIGN §4, docs/cli.md), and the checks made before a
+// run writes into one.
+
+#include <filesystem>
+#include <string>
+
+namespace rodsort::runner {
+
+inline constexpr const char* kScenarioSourceFile = "scenario.yaml";  ///< the file as given
+inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.yaml";
+inline constexpr const char* kRodsCsvFile = "rods.csv";
+inline constexpr const char* kMetricsCsvFile = "metrics.csv";
+inline constexpr const char* kTrajectoryFile = "trajectory.dump";
+inline constexpr const char* kCheckpointFile = "checkpoint.bin";
+inline constexpr const char* kRunRecordFile = "run.json";
+inline constexpr const char* kOverridesFile = "overrides.txt";  ///< the --set arguments, one a line
+
+/// "snapshot-t12.5.bullet": the .bullet snapshot taken at simulated time `time_s`.
+std::string snapshot_file_name(double time_s);
+
+/// Whether `directory` already holds (part of) a run: any of the files a run writes.
+bool holds_run(const std::filesystem::path& directory);
+
+/// Removes the files a run writes from `directory`, and nothing else (for --force).
+void clear_run(const std::filesystem::path& directory);
+
+}  // namespace rodsort::runner
