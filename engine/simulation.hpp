@@ -38,6 +38,8 @@ class Simulation {
   /// Heights of the plates' top (base) and bottom (lid) surfaces at the current time [mm].
   double base_surface_z() const;
   double lid_surface_z() const;
+  /// Vertical velocity Bullet gave the base over the last step [mm/s].
+  double base_velocity_z() const;
 
   /// Writes the Bullet world (shapes, poses, contacts) as a .bullet file.
   void write_bullet_snapshot(const std::filesystem::path& path) const;

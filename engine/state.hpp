@@ -11,7 +11,7 @@ namespace rodsort::engine {
 
 struct RodState {
   std::array<double, 3> position;          ///< wrapped centre of mass [mm]
-  std::array<double, 4> orientation;       ///< quaternion x, y, z, w
+  std::array<double, 9> basis;             ///< rotation matrix, row-major (body x = rod axis)
   std::array<double, 3> velocity;          ///< [mm/s]
   std::array<double, 3> angular_velocity;  ///< [rad/s]
   std::array<std::int64_t, 2> image;       ///< periodic image counts: unwrapped = wrapped + image*box

@@ -1,0 +1,17 @@
+#include "engine/model.hpp"
+
+#include "engine/units.hpp"
+
+namespace rodsort::engine {
+
+double Drive::amplitude_from_gamma(double gamma, double frequency) {
+  const double omega = 2.0 * kPi * frequency;
+  return gamma * kGravity / (omega * omega);
+}
+
+double Drive::gamma() const {
+  const double omega = 2.0 * kPi * frequency;
+  return amplitude * omega * omega / kGravity;
+}
+
+}  // namespace rodsort::engine

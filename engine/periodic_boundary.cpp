@@ -1,0 +1,92 @@
+// Periodic boundaries in x and y.
+//
+// The paper's cell is periodic in the plane. Bullet knows nothing of periodicity, so we build it
+// from three pieces:
+//  1. Wrapping: before each step, a rod whose centre of mass has left [0, Lx) x [0, Ly) is moved
+//     by a whole number of cells (world and interpolation transforms; the broadphase simply sees a
+//     jump). The number of cells crossed is kept, so unwrapped positions are exact.
+//  2. Images: a rod near an edge gets image collision objects that share its shape, sitting at
+//     the rod's pose shifted by S in {(Lx,0), (0,Ly), (Lx,Ly), (Lx,-Ly)}. Only these four "forward"
+//     shifts are used: for any pair of rods that touch across an edge, exactly one of them has the
+//     image that meets the other, so no contact is counted twice. Images are in their own
+//     collision group and meet only rods, and never their own rod.
+//  3. Contact translation: to Bullet an image is a static object, so a contact with it would push
+//     only the other rod. The solver subclass below rewrites every manifold that touches an image
+//     before the contacts become constraints: the image is replaced by its real rod, and the
+//     contact point on that side is moved back by -S. The solver then sees exactly the contact it
+//     would see if the two rods met in the middle of the cell, and a collision across an edge or a
+//     corner gives the same outcome as one in the interior (to round-off).
+// The world must be created with setSplitIslands(false): otherwise a rod touching another through
+// an image can land in two islands and receive gravity twice.
+#include "engine/periodic_boundary.hpp"
+
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+
+#include <cmath>
+
+#include "engine/body_tag.hpp"
+
+namespace rodsort::engine {
+
+PeriodicCell::PeriodicCell(double box_x, double box_y, double reach)
+    : box_x_(box_x),
+      box_y_(box_y),
+      reach_(reach),
+      shifts_{btVector3(box_x, 0, 0), btVector3(0, box_y, 0), btVector3(box_x, box_y, 0),
+              btVector3(box_x, -box_y, 0)} {}
+
+bool PeriodicCell::image_needed(double x, double y, int index) const {
+  const btVector3& s = shifts_[static_cast<std::size_t>(index)];
+  const double image_x = x + s.x();
+  const double image_y = y + s.y();
+  return image_x > -reach_ && image_x < box_x_ + reach_ && image_y > -reach_ &&
+         image_y < box_y_ + reach_;
+}
+
+std::array<std::int64_t, 2> PeriodicCell::wrap_count(double x, double y) const {
+  return {static_cast<std::int64_t>(std::floor(x / box_x_)),
+          static_cast<std::int64_t>(std::floor(y / box_y_))};
+}
+
+bool PeriodicOverlapFilter::needBroadphaseCollision(btBroadphaseProxy* proxy0,
+                                                    btBroadphaseProxy* proxy1) const {
+  const bool groups_meet = (proxy0->m_collisionFilterGroup & proxy1->m_collisionFilterMask) != 0 &&
+                           (proxy1->m_collisionFilterGroup & proxy0->m_collisionFilterMask) != 0;
+  if (!groups_meet) return false;
+  const auto* a = static_cast<const btCollisionObject*>(proxy0->m_clientObject);
+  const auto* b = static_cast<const btCollisionObject*>(proxy1->m_clientObject);
+  const auto* tag_a = static_cast<const BodyTag*>(a->getUserPointer());
+  const auto* tag_b = static_cast<const BodyTag*>(b->getUserPointer());
+  const bool image_pair = tag_a->kind == BodyKind::kImage || tag_b->kind == BodyKind::kImage;
+  return !(image_pair && tag_a->rod == tag_b->rod);
+}
+
+void PeriodicContactSolver::convertContacts(btPersistentManifold** manifolds, int manifold_count,
+                                            const btContactSolverInfo& info) {
+  translated_.clear();
+  for (int i = 0; i < manifold_count; ++i) {
+    btPersistentManifold* manifold = manifolds[i];
+    const auto* tag0 = static_cast<const BodyTag*>(manifold->getBody0()->getUserPointer());
+    const auto* tag1 = static_cast<const BodyTag*>(manifold->getBody1()->getUserPointer());
+    const bool image0 = tag0->kind == BodyKind::kImage;
+    const bool image1 = tag1->kind == BodyKind::kImage;
+    if (!image0 && !image1) {
+      convertContact(manifold, info);
+      continue;
+    }
+    btPersistentManifold& copy = translated_.emplace_back(*manifold);
+    const btCollisionObject* body0 =
+        image0 ? rods_[static_cast<std::size_t>(tag0->rod)] : manifold->getBody0();
+    const btCollisionObject* body1 =
+        image1 ? rods_[static_cast<std::size_t>(tag1->rod)] : manifold->getBody1();
+    copy.setBodies(body0, body1);
+    for (int p = 0; p < copy.getNumContacts(); ++p) {
+      btManifoldPoint& point = copy.getContactPoint(p);
+      if (image0) point.m_positionWorldOnA -= cell_.shift(tag0->shift);
+      if (image1) point.m_positionWorldOnB -= cell_.shift(tag1->shift);
+    }
+    convertContact(&copy, info);
+  }
+}
+
+}  // namespace rodsort::engine

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <BulletCollision/BroadphaseCollision/btOverlappingPairCache.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+class btRigidBody;
+
+namespace rodsort::engine {
+
+/// Geometry of the periodic cell [0, box_x) x [0, box_y) and of the image shifts.
+class PeriodicCell {
+ public:
+  static constexpr int kShiftCount = 4;
+
+  /// reach: how far beyond the cell edge an image must be kept so that it can touch a rod whose
+  /// centre is inside the cell (twice the largest rod half-length plus a margin) [mm].
+  PeriodicCell(double box_x, double box_y, double reach);
+
+  double box_x() const { return box_x_; }
+  double box_y() const { return box_y_; }
+  btVector3 shift(int index) const { return shifts_[static_cast<std::size_t>(index)]; }
+
+  /// Whether the image of a rod centred at (x, y) (wrapped) under shift `index` can touch a rod.
+  bool image_needed(double x, double y, int index) const;
+
+  /// Number of cells to subtract along x and y to bring (x, y) into the cell.
+  std::array<std::int64_t, 2> wrap_count(double x, double y) const;
+
+ private:
+  double box_x_, box_y_, reach_;
+  std::array<btVector3, kShiftCount> shifts_;
+};
+
+/// Broadphase filter: the usual group/mask test, and a rod never meets its own image.
+class PeriodicOverlapFilter : public btOverlapFilterCallback {
+ public:
+  bool needBroadphaseCollision(btBroadphaseProxy* proxy0, btBroadphaseProxy* proxy1) const override;
+};
+
+/// Contact solver for periodic images: a contact with an image is handed to the solver as a
+/// contact with the real rod, its contact point moved back by the image's shift.
+class PeriodicContactSolver : public btSequentialImpulseConstraintSolver {
+ public:
+  PeriodicContactSolver(const PeriodicCell& cell, const std::vector<btRigidBody*>& rods)
+      : cell_(cell), rods_(rods) {}
+
+ protected:
+  void convertContacts(btPersistentManifold** manifolds, int manifold_count,
+                       const btContactSolverInfo& info) override;
+
+ private:
+  const PeriodicCell& cell_;
+  const std::vector<btRigidBody*>& rods_;
+  std::deque<btPersistentManifold> translated_;  ///< live until the next step's conversion
+};
+
+}  // namespace rodsort::engine

@@ -1,0 +1,457 @@
+// The simulation: a Bullet world of tapered rods between a vibrating base and lid.
+//
+// One step of dt:
+//  1. rods whose centre left the periodic cell are wrapped, and their images refreshed
+//     (periodic_boundary.cpp);
+//  2. the plates are moved to their position at t + dt (plate_drive.cpp);
+//  3. the rods' velocities are saved for the collision kick;
+//  4. Bullet takes exactly one internal step of dt;
+//  5. collision kicks are applied to rods that have just hit a plate (collision_kick.cpp);
+//  6. white angular noise turns each rod about the vertical through its centre of mass by
+//     sqrt(2 D_r dt) xi, a Brownian rotation that the contacts then resolve.
+//
+// Restitution. Bullet loses restitution with its default settings: speculative contacts (points
+// within the contact-breaking distance that have not yet touched) slow a body before impact, and
+// the split-impulse threshold mixes position correction into the velocity. We process only
+// penetrating points (contact processing threshold 0 on every rod), always use split impulse
+// (penetration threshold 0) and lower the restitution velocity threshold to a few g dt, below
+// which Bullet drops restitution. With these the measured coefficient equals the configured one
+// (tests/engine/restitution_test.cpp).
+#include "engine/simulation.hpp"
+
+#include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
+#include <btBulletDynamicsCommon.h>
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "engine/body_tag.hpp"
+#include "engine/collision_kick.hpp"
+#include "engine/periodic_boundary.hpp"
+#include "engine/plate_drive.hpp"
+#include "engine/random_stream.hpp"
+#include "engine/units.hpp"
+
+namespace rodsort::engine {
+namespace {
+
+/// Contact-breaking distance factor. Bullet multiplies it by a shape's bounding radius
+/// (~2.4 mm for rod A), giving ~0.1 mm, well above 2 v dt for the speeds met at dt <= 1e-4 s.
+constexpr double kContactBreakingFactor = 0.04;
+/// Extra margin for images and plates beyond the reach of the largest rod [mm].
+constexpr double kReachMargin = 1.0;
+
+// The state keeps Bullet's rotation matrix, not a quaternion, so that saving and restoring a
+// world is exact to the bit.
+btMatrix3x3 to_bullet(const std::array<double, 9>& m) {
+  return {m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]};
+}
+std::array<double, 9> from_bullet(const btMatrix3x3& m) {
+  return {m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2]};
+}
+btVector3 to_bullet(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
+std::array<double, 3> from_bullet(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+double largest_rod_reach(const Model& model) {
+  double reach = 0.0;
+  for (const Species& species : model.species) {
+    for (const Sphere& sphere : species.shape.spheres) {
+      reach = std::max(reach, std::abs(sphere.axial) + sphere.radius);
+    }
+  }
+  return reach;
+}
+
+}  // namespace
+
+struct Simulation::Impl {
+  Model model;
+  PlateDrive drive;
+  PeriodicCell cell;
+
+  // Shapes outlive the world; one compound per species.
+  std::vector<std::unique_ptr<btSphereShape>> sphere_shapes;
+  std::vector<std::unique_ptr<btCompoundShape>> rod_shapes;
+  std::unique_ptr<btBoxShape> plate_shape;
+  std::vector<std::unique_ptr<btBoxShape>> wall_shapes;
+
+  // The world; rebuilt on restore.
+  std::unique_ptr<btDefaultCollisionConfiguration> configuration;
+  std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<btDbvtBroadphase> broadphase;
+  std::unique_ptr<PeriodicOverlapFilter> overlap_filter;
+  std::unique_ptr<PeriodicContactSolver> solver;
+  std::unique_ptr<btDiscreteDynamicsWorld> world;
+
+  std::unique_ptr<btRigidBody> base, lid;
+  std::vector<std::unique_ptr<btRigidBody>> walls;
+  std::vector<std::unique_ptr<btRigidBody>> rod_bodies;
+  std::vector<btRigidBody*> rods;  ///< views of rod_bodies, for the solver and the kick
+  std::vector<std::unique_ptr<btCollisionObject>> images;  ///< rod * kShiftCount + shift
+  std::vector<char> image_in_world;
+  std::vector<BodyTag> rod_tags, image_tags, wall_tags;
+  BodyTag base_tag{}, lid_tag{};
+
+  // Everything of the State that is not in the Bullet bodies.
+  double time = 0.0;
+  std::int64_t step = 0;
+  std::vector<std::array<std::int64_t, 2>> image_count;
+  std::vector<CollisionKick::Touching> touching;
+  std::vector<RandomStream> kick_streams, noise_streams;
+
+  std::vector<double> kick_eps, white_noise_step;  ///< per rod
+  CollisionKick kick;
+  SimulationCounters counters;
+
+  explicit Impl(Model m)
+      : model(std::move(m)),
+        drive(model.drive),
+        cell(model.box_x, model.box_y, 2.0 * largest_rod_reach(model) + kReachMargin) {
+    install_material_table_callbacks();
+    gContactBreakingThreshold = kContactBreakingFactor;
+    build_shapes();
+    for (const RodInit& init : model.rods) {
+      const Species& species = model.species.at(static_cast<std::size_t>(init.species));
+      kick_eps.push_back(species.noise.kick_eps);
+      white_noise_step.push_back(std::sqrt(2.0 * species.noise.white_Dr * model.dt));
+    }
+    build_world(initial_state());
+  }
+
+  ~Impl() { destroy_world(); }
+
+  void build_shapes() {
+    for (const Species& species : model.species) {
+      auto compound = std::make_unique<btCompoundShape>(false, static_cast<int>(species.shape.spheres.size()));
+      for (const Sphere& sphere : species.shape.spheres) {
+        auto& child = sphere_shapes.emplace_back(std::make_unique<btSphereShape>(sphere.radius));
+        btTransform offset;
+        offset.setIdentity();
+        offset.setOrigin(btVector3(sphere.axial, 0, 0));
+        compound->addChildShape(offset, child.get());
+      }
+      rod_shapes.push_back(std::move(compound));
+    }
+    const double overhang = 2.0 * largest_rod_reach(model) + kReachMargin;
+    plate_shape = std::make_unique<btBoxShape>(btVector3(model.box_x / 2 + overhang,
+                                                         model.box_y / 2 + overhang,
+                                                         PlateDrive::kPlateHalfThickness));
+    // Walls reach through both plates at their extreme positions.
+    const double wall_half_height = model.drive.gap + 2.0 * model.drive.amplitude + 1.0;
+    for (const Wall& wall : model.walls) {
+      wall_shapes.push_back(std::make_unique<btBoxShape>(
+          btVector3(wall.half_length, wall.half_thickness, wall_half_height)));
+    }
+  }
+
+  State initial_state() const {
+    State state;
+    const double rest_height = drive.base_surface_z(0.0) + 0.01;
+    for (std::size_t i = 0; i < model.rods.size(); ++i) {
+      const RodInit& init = model.rods[i];
+      const Species& species = model.species.at(static_cast<std::size_t>(init.species));
+      RodState rod{};
+      rod.position = {init.x, init.y, rest_height + species.shape.max_radius};
+      rod.basis = from_bullet(btMatrix3x3(btQuaternion(btVector3(0, 0, 1), init.heading)));
+      rod.velocity = {0, 0, 0};
+      rod.angular_velocity = {0, 0, 0};
+      rod.image = {0, 0};
+      rod.touching = {false, false};
+      rod.kick_rng = RandomStream(model.seed, i, StreamPurpose::kCollisionKick).state();
+      rod.noise_rng = RandomStream(model.seed, i, StreamPurpose::kWhiteNoise).state();
+      state.rods.push_back(rod);
+    }
+    return state;
+  }
+
+  std::unique_ptr<btRigidBody> make_kinematic_plate(BodyTag& tag) {
+    btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, plate_shape.get());
+    auto body = std::make_unique<btRigidBody>(info);
+    body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+    body->setActivationState(DISABLE_DEACTIVATION);
+    body->setUserPointer(&tag);
+    btTransform transform;
+    transform.setIdentity();
+    transform.setOrigin(btVector3(model.box_x / 2, model.box_y / 2, 0));
+    body->setWorldTransform(transform);
+    world->addRigidBody(body.get(), kGroupPlate, kGroupRod);
+    return body;
+  }
+
+  void build_world(const State& state) {
+    if (state.rods.size() != model.rods.size()) {
+      throw std::invalid_argument("state has " + std::to_string(state.rods.size()) +
+                                  " rods, the model " + std::to_string(model.rods.size()));
+    }
+    configuration = std::make_unique<btDefaultCollisionConfiguration>();
+    dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
+    broadphase = std::make_unique<btDbvtBroadphase>();
+    overlap_filter = std::make_unique<PeriodicOverlapFilter>();
+    broadphase->getOverlappingPairCache()->setOverlapFilterCallback(overlap_filter.get());
+    solver = std::make_unique<PeriodicContactSolver>(cell, rods);
+    world = std::make_unique<btDiscreteDynamicsWorld>(dispatcher.get(), broadphase.get(),
+                                                      solver.get(), configuration.get());
+    world->setGravity(btVector3(0, 0, -kGravity));
+    world->getSimulationIslandManager()->setSplitIslands(false);
+    btContactSolverInfo& info = world->getSolverInfo();
+    info.m_numIterations = model.solver_iterations;
+    // Two friction directions per contact: with Bullet's default single direction (along the
+    // current sliding velocity) a rod on the vibrated plate spins up by itself, turning ~25 rad in
+    // 5 s without any noise. Warm starting stays on: it is also what makes Bullet write the
+    // applied impulse back to the contact points, which the collision kick reads.
+    info.m_solverMode = SOLVER_USE_WARMSTARTING | SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_SIMD;
+    info.m_splitImpulse = 1;
+    info.m_splitImpulsePenetrationThreshold = 0.0;
+    info.m_restitutionVelocityThreshold = 2.5 * kGravity * model.dt;
+
+    base_tag = {BodyKind::kBase, MaterialTable::kBase, &model.materials};
+    lid_tag = {BodyKind::kLid, MaterialTable::kLid, &model.materials};
+    base = make_kinematic_plate(base_tag);
+    lid = make_kinematic_plate(lid_tag);
+    drive.place(*base, *lid, state.time, true);
+
+    wall_tags.clear();
+    wall_tags.reserve(model.walls.size());
+    for (std::size_t w = 0; w < model.walls.size(); ++w) {
+      const Wall& wall = model.walls[w];
+      wall_tags.push_back({BodyKind::kWall, wall.material, &model.materials});
+      btRigidBody::btRigidBodyConstructionInfo info_wall(0.0, nullptr, wall_shapes[w].get());
+      auto body = std::make_unique<btRigidBody>(info_wall);
+      btTransform transform(btQuaternion(btVector3(0, 0, 1), wall.yaw),
+                            btVector3(wall.center_x, wall.center_y, model.drive.gap / 2));
+      body->setWorldTransform(transform);
+      body->setUserPointer(&wall_tags.back());
+      world->addRigidBody(body.get(), kGroupWall, kGroupRod);
+      walls.push_back(std::move(body));
+    }
+
+    const std::size_t rod_count = model.rods.size();
+    rod_tags.clear();
+    rod_tags.reserve(rod_count);
+    rods.clear();
+    for (std::size_t i = 0; i < rod_count; ++i) {
+      const RodState& rs = state.rods[i];
+      const Species& species = model.species[static_cast<std::size_t>(model.rods[i].species)];
+      rod_tags.push_back({BodyKind::kRod, species.material, &model.materials, static_cast<int>(i)});
+      btCompoundShape* shape = rod_shapes[static_cast<std::size_t>(model.rods[i].species)].get();
+      btRigidBody::btRigidBodyConstructionInfo info_rod(species.shape.mass, nullptr, shape);
+      auto body = std::make_unique<btRigidBody>(info_rod);
+      // Bullet's compound inertia is a bounding-box estimate; use the union's exact values.
+      body->setMassProps(species.shape.mass,
+                         btVector3(species.shape.inertia_axial, species.shape.inertia_transverse,
+                                   species.shape.inertia_transverse));
+      body->updateInertiaTensor();
+      body->setActivationState(DISABLE_DEACTIVATION);
+      body->setContactProcessingThreshold(0.0);
+      body->setUserPointer(&rod_tags.back());
+      const btTransform transform(to_bullet(rs.basis), to_bullet(rs.position));
+      body->setWorldTransform(transform);
+      body->setInterpolationWorldTransform(transform);
+      body->setLinearVelocity(to_bullet(rs.velocity));
+      body->setAngularVelocity(to_bullet(rs.angular_velocity));
+      body->setInterpolationLinearVelocity(to_bullet(rs.velocity));
+      body->setInterpolationAngularVelocity(to_bullet(rs.angular_velocity));
+      world->addRigidBody(body.get(), kGroupRod, kGroupRod | kGroupPlate | kGroupWall | kGroupImage);
+      body->updateInertiaTensor();
+      rods.push_back(body.get());
+      rod_bodies.push_back(std::move(body));
+    }
+
+    image_tags.clear();
+    image_tags.reserve(rod_count * PeriodicCell::kShiftCount);
+    for (std::size_t i = 0; i < rod_count; ++i) {
+      for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
+        image_tags.push_back({BodyKind::kImage, rod_tags[i].material, &model.materials,
+                              static_cast<int>(i), s});
+        auto image = std::make_unique<btCollisionObject>();
+        image->setCollisionShape(rods[i]->getCollisionShape());
+        image->setUserPointer(&image_tags.back());
+        image->setActivationState(DISABLE_DEACTIVATION);
+        image->setContactProcessingThreshold(0.0);
+        images.push_back(std::move(image));
+      }
+    }
+    image_in_world.assign(images.size(), 0);
+
+    time = state.time;
+    step = state.step;
+    image_count.clear();
+    touching.clear();
+    kick_streams.clear();
+    noise_streams.clear();
+    for (const RodState& rs : state.rods) {
+      image_count.push_back(rs.image);
+      touching.push_back(rs.touching);
+      kick_streams.emplace_back(rs.kick_rng);
+      noise_streams.emplace_back(rs.noise_rng);
+    }
+  }
+
+  void destroy_world() {
+    if (!world) return;
+    for (std::size_t k = 0; k < images.size(); ++k) {
+      if (image_in_world[k]) world->removeCollisionObject(images[k].get());
+    }
+    for (auto& body : rod_bodies) world->removeRigidBody(body.get());
+    for (auto& body : walls) world->removeRigidBody(body.get());
+    world->removeRigidBody(base.get());
+    world->removeRigidBody(lid.get());
+    images.clear();
+    image_in_world.clear();
+    rod_bodies.clear();
+    rods.clear();
+    walls.clear();
+    base.reset();
+    lid.reset();
+    world.reset();
+    solver.reset();
+    broadphase.reset();
+    overlap_filter.reset();
+    dispatcher.reset();
+    configuration.reset();
+  }
+
+  void wrap_and_refresh_images() {
+    for (std::size_t i = 0; i < rods.size(); ++i) {
+      btRigidBody& body = *rods[i];
+      btTransform transform = body.getWorldTransform();
+      const auto crossed = cell.wrap_count(transform.getOrigin().x(), transform.getOrigin().y());
+      if (crossed[0] != 0 || crossed[1] != 0) {
+        const btVector3 jump(static_cast<double>(crossed[0]) * cell.box_x(),
+                             static_cast<double>(crossed[1]) * cell.box_y(), 0.0);
+        transform.getOrigin() -= jump;
+        body.setWorldTransform(transform);
+        btTransform interpolation = body.getInterpolationWorldTransform();
+        interpolation.getOrigin() -= jump;
+        body.setInterpolationWorldTransform(interpolation);
+        image_count[i][0] += crossed[0];
+        image_count[i][1] += crossed[1];
+      }
+      for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
+        const std::size_t k = i * PeriodicCell::kShiftCount + static_cast<std::size_t>(s);
+        const bool needed = cell.image_needed(transform.getOrigin().x(), transform.getOrigin().y(), s);
+        btCollisionObject& image = *images[k];
+        if (needed) {
+          btTransform shifted = transform;
+          shifted.getOrigin() += cell.shift(s);
+          image.setWorldTransform(shifted);
+          if (!image_in_world[k]) {
+            world->addCollisionObject(&image, kGroupImage, kGroupRod);
+            image_in_world[k] = 1;
+          }
+        } else if (image_in_world[k]) {
+          world->removeCollisionObject(&image);
+          image_in_world[k] = 0;
+        }
+      }
+    }
+  }
+
+  void apply_white_noise() {
+    for (std::size_t i = 0; i < rods.size(); ++i) {
+      if (white_noise_step[i] == 0.0) continue;
+      const double angle = white_noise_step[i] * noise_streams[i].normal();
+      btRigidBody& body = *rods[i];
+      btTransform transform = body.getWorldTransform();
+      transform.setRotation(btQuaternion(btVector3(0, 0, 1), angle) * transform.getRotation());
+      body.setWorldTransform(transform);
+      body.setInterpolationWorldTransform(transform);
+    }
+  }
+
+  void do_step() {
+    wrap_and_refresh_images();
+    drive.place(*base, *lid, time + model.dt, false);
+    kick.save_velocities(rods);
+    world->stepSimulation(model.dt, 0, model.dt);
+    counters.kicks += kick.apply(*dispatcher, rods, kick_eps, touching, kick_streams);
+    apply_white_noise();
+    ++step;
+    time = static_cast<double>(step) * model.dt;
+  }
+
+  State current_state() const {
+    State state;
+    state.time = time;
+    state.step = step;
+    state.rods.reserve(rods.size());
+    for (std::size_t i = 0; i < rods.size(); ++i) {
+      const btRigidBody& body = *rods[i];
+      RodState rs{};
+      rs.position = from_bullet(body.getWorldTransform().getOrigin());
+      rs.basis = from_bullet(body.getWorldTransform().getBasis());
+      rs.velocity = from_bullet(body.getLinearVelocity());
+      rs.angular_velocity = from_bullet(body.getAngularVelocity());
+      rs.image = image_count[i];
+      rs.touching = touching[i];
+      rs.kick_rng = kick_streams[i].state();
+      rs.noise_rng = noise_streams[i].state();
+      state.rods.push_back(rs);
+    }
+    return state;
+  }
+};
+
+Simulation::Simulation(Model model) : impl_(std::make_unique<Impl>(std::move(model))) {}
+Simulation::~Simulation() = default;
+
+void Simulation::step() { impl_->do_step(); }
+
+void Simulation::advance(std::int64_t steps) {
+  for (std::int64_t i = 0; i < steps; ++i) impl_->do_step();
+}
+
+double Simulation::time() const { return impl_->time; }
+std::int64_t Simulation::step_count() const { return impl_->step; }
+const Model& Simulation::model() const { return impl_->model; }
+SimulationCounters Simulation::counters() const { return impl_->counters; }
+
+Frame Simulation::frame() const {
+  Frame frame;
+  frame.time = impl_->time;
+  frame.rods.reserve(impl_->rods.size());
+  for (std::size_t i = 0; i < impl_->rods.size(); ++i) {
+    const btRigidBody& body = *impl_->rods[i];
+    const btTransform& transform = body.getWorldTransform();
+    const btVector3 axis = transform.getBasis().getColumn(0);
+    RodFrame rod;
+    rod.species = impl_->model.rods[i].species;
+    rod.position = {transform.getOrigin().x(), transform.getOrigin().y()};
+    rod.unwrapped = rod.position +
+                    Eigen::Vector2d(static_cast<double>(impl_->image_count[i][0]) * impl_->model.box_x,
+                                    static_cast<double>(impl_->image_count[i][1]) * impl_->model.box_y);
+    rod.z = transform.getOrigin().z();
+    rod.axis = {axis.x(), axis.y(), axis.z()};
+    const btVector3& v = body.getLinearVelocity();
+    const btVector3& w = body.getAngularVelocity();
+    rod.velocity = {v.x(), v.y(), v.z()};
+    rod.angular_velocity = {w.x(), w.y(), w.z()};
+    frame.rods.push_back(rod);
+  }
+  return frame;
+}
+
+State Simulation::state() const { return impl_->current_state(); }
+
+void Simulation::restore(const State& state) {
+  impl_->destroy_world();
+  impl_->build_world(state);
+}
+
+double Simulation::base_surface_z() const { return impl_->drive.base_surface_z(impl_->time); }
+double Simulation::lid_surface_z() const { return impl_->drive.lid_surface_z(impl_->time); }
+
+double Simulation::base_velocity_z() const { return impl_->base->getLinearVelocity().z(); }
+
+void Simulation::write_bullet_snapshot(const std::filesystem::path& path) const {
+  btDefaultSerializer serializer;
+  serializer.setSerializationFlags(BT_SERIALIZE_CONTACT_MANIFOLDS);
+  impl_->world->serialize(&serializer);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(serializer.getBufferPointer()),
+            serializer.getCurrentBufferSize());
+  if (!out) throw std::runtime_error("cannot write Bullet snapshot " + path.string());
+}
+
+}  // namespace rodsort::engine

@@ -1,0 +1,87 @@
+#include "engine/state.hpp"
+
+#include <cstring>
+#include <istream>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace rodsort::engine {
+namespace {
+
+constexpr char kMagic[8] = {'R', 'O', 'D', 'S', 'T', 'A', 'T', '1'};
+
+template <typename T>
+void put(std::ostream& out, const T& value) {
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+template <typename T>
+void get(std::istream& in, T& value) {
+  in.read(reinterpret_cast<char*>(&value), sizeof(T));
+  if (!in) throw std::runtime_error("state stream is truncated");
+}
+
+}  // namespace
+
+void write_state(std::ostream& out, const State& state) {
+  out.write(kMagic, sizeof kMagic);
+  put(out, state.time);
+  put(out, state.step);
+  put(out, static_cast<std::uint64_t>(state.rods.size()));
+  for (const RodState& rod : state.rods) {
+    put(out, rod.position);
+    put(out, rod.basis);
+    put(out, rod.velocity);
+    put(out, rod.angular_velocity);
+    put(out, rod.image);
+    const std::uint8_t touching =
+        static_cast<std::uint8_t>((rod.touching[0] ? 1 : 0) | (rod.touching[1] ? 2 : 0));
+    put(out, touching);
+    put(out, rod.kick_rng);
+    put(out, rod.noise_rng);
+  }
+}
+
+State read_state(std::istream& in) {
+  char magic[sizeof kMagic];
+  in.read(magic, sizeof magic);
+  if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0) {
+    throw std::runtime_error("not a rodsort state (bad magic)");
+  }
+  State state;
+  std::uint64_t count = 0;
+  get(in, state.time);
+  get(in, state.step);
+  get(in, count);
+  constexpr std::uint64_t kMaxRods = 100'000'000;
+  if (count > kMaxRods) throw std::runtime_error("state claims an absurd number of rods");
+  state.rods.resize(count);
+  for (RodState& rod : state.rods) {
+    get(in, rod.position);
+    get(in, rod.basis);
+    get(in, rod.velocity);
+    get(in, rod.angular_velocity);
+    get(in, rod.image);
+    std::uint8_t touching = 0;
+    get(in, touching);
+    rod.touching = {(touching & 1) != 0, (touching & 2) != 0};
+    get(in, rod.kick_rng);
+    get(in, rod.noise_rng);
+  }
+  return state;
+}
+
+std::uint64_t hash_state(const State& state) {
+  std::ostringstream bytes;
+  write_state(bytes, state);
+  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
+  for (const char c : bytes.str()) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 0x100000001b3ULL;
+  }
+  return hash;
+}
+
+}  // namespace rodsort::engine

@@ -1,0 +1,36 @@
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "engine/plate_drive.hpp"
+#include "engine/simulation.hpp"
+#include "paper_model.hpp"
+
+using namespace rodsort::engine;
+
+TEST_CASE("plates follow A cos(2 pi f t), the lid a gap above", "[plates]") {
+  const Model model = testing::single_rod_model(testing::rod_species(preset_a_profile()));
+  const PlateDrive drive(model.drive);
+  CHECK(model.drive.amplitude == Approx(0.0435).epsilon(0.01));
+  CHECK(model.drive.gamma() == Approx(7.0).epsilon(1e-12));
+  Simulation sim(model);
+  for (int i = 0; i < 37; ++i) sim.step();
+  const double t = sim.time();
+  CHECK(t == Approx(37 * model.dt).epsilon(1e-12));
+  CHECK(sim.base_surface_z() ==
+        Approx(model.drive.amplitude * std::cos(2 * rodsort::kPi * 200.0 * t)).margin(1e-12));
+  CHECK(sim.lid_surface_z() - sim.base_surface_z() == Approx(1.2).epsilon(1e-12));
+}
+
+TEST_CASE("the solver sees the exact plate velocity: one internal step per step", "[plates]") {
+  for (const double dt : {1.0e-4, 2.5e-5}) {
+    const Model model = testing::single_rod_model(testing::rod_species(preset_a_profile()), dt);
+    const PlateDrive drive(model.drive);
+    Simulation sim(model);
+    for (int i = 0; i < 200; ++i) {
+      const double before = sim.time();
+      sim.step();
+      const double expected = (drive.base_surface_z(before + dt) - drive.base_surface_z(before)) / dt;
+      REQUIRE(sim.base_velocity_z() == Approx(expected).margin(1e-6));
+    }
+  }
+}
