@@ -43,6 +43,10 @@ void AppendFile::append(std::string_view text) {
   size_ += text.size();
 }
 
+void AppendFile::sync() {
+  if (::fdatasync(fd_) != 0) fail("cannot flush", path_);
+}
+
 void AppendFile::truncate(std::uint64_t bytes) {
   if (bytes > size_) {
     throw std::runtime_error(path_.string() + " holds " + std::to_string(size_) +

@@ -20,6 +20,9 @@ class AppendFile {
 
   /// Appends `text` with as few system calls as the kernel allows (one for a regular file).
   void append(std::string_view text);
+  /// Waits until what was appended is on disk, so that a checkpoint written next never records
+  /// more than a power cut would leave.
+  void sync();
   /// Cuts the file back to `bytes` (a size recorded earlier by size()).
   void truncate(std::uint64_t bytes);
   std::uint64_t size() const { return size_; }

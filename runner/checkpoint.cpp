@@ -43,6 +43,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
   out << "cpu_s " << json_number(checkpoint.cpu_s) << '\n';
   out << "sessions " << checkpoint.sessions << '\n';
   out << "started_at " << checkpoint.started_at << '\n';
+  out << "metrics_replay_offset " << checkpoint.metrics_replay_offset << '\n';
   out << "state\n";
   engine::write_state(out, checkpoint.state);
   write_file_atomically(path, out.str());
@@ -73,6 +74,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
         checkpoint.cpu_s = parse_double(value, key);
       } else if (key == "sessions") {
         checkpoint.sessions = static_cast<int>(parse_unsigned(value, key));
+      } else if (key == "metrics_replay_offset") {
+        checkpoint.metrics_replay_offset = parse_unsigned(value, key);
       } else if (key == "started_at") {
         checkpoint.started_at = value;
       } else {

@@ -24,6 +24,9 @@ struct Checkpoint {
   double cpu_s = 0.0;   ///< CPU seconds spent on the run up to the state, over all sessions
   int sessions = 1;     ///< processes that have worked on the run so far
   std::string started_at;  ///< UTC, ISO 8601, when the first session started
+  /// Offset in rods.csv of the first frame the metrics observer must see again on resume: the
+  /// frames from there on cover the observer's window.
+  std::uint64_t metrics_replay_offset = 0;
 };
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& checkpoint);
