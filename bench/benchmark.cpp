@@ -1,0 +1,153 @@
+#include "bench/benchmark.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <ostream>
+#include <stdexcept>
+
+#include "bench/standard_system.hpp"
+#include "engine/simulation.hpp"
+
+namespace rodsort::bench {
+namespace {
+
+double process_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+double wall_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+}  // namespace
+
+void add_options(CLI::App& app, Options& options) {
+  app.add_option("--systems", options.systems,
+                 "systems to run, smallest first: single (one free rod), 319, 1276, 5104 (the "
+                 "paper's trap system, side x1, x2, x4)")
+      ->delimiter(',')
+      ->capture_default_str();
+  app.add_option("--dt", options.dt, "time step [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--time", options.simulated_time, "measured simulated time per system [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--warmup", options.warmup, "simulated time before measuring [s]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--repeats", options.repeats, "measurements per system; the fastest is reported")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--seed", options.seed, "seed of placement and noise")->capture_default_str();
+  app.add_flag("--csv", options.csv, "print CSV instead of a table");
+}
+
+Result run_system(const std::string& name, const Options& options) {
+  const SystemSpec system = find_system(name);
+  const std::int64_t warmup_steps = std::llround(options.warmup / options.dt);
+  const std::int64_t steps =
+      std::max<std::int64_t>(1, std::llround(options.simulated_time / options.dt));
+
+  Result result;
+  result.system = system.name;
+  result.rods = system.rod_count;
+  result.dt = options.dt;
+  result.steps = steps;
+  for (int repeat = 0; repeat < options.repeats; ++repeat) {
+    engine::Simulation simulation(build_model(system, options.dt, options.seed));
+    simulation.advance(warmup_steps);
+    const std::int64_t kicks_before = simulation.counters().kicks;
+    const double cpu_start = process_cpu_seconds();
+    const double wall_start = wall_seconds();
+    simulation.advance(steps);
+    const double cpu = process_cpu_seconds() - cpu_start;
+    const double wall = wall_seconds() - wall_start;
+    if (repeat == 0 || cpu < result.cpu_seconds) {
+      result.cpu_seconds = cpu;
+      result.wall_seconds = wall;
+    }
+    const double simulated = static_cast<double>(steps) * options.dt;
+    result.kicks_per_rod_second =
+        std::llround(static_cast<double>(simulation.counters().kicks - kicks_before) / simulated /
+                     system.rod_count);
+  }
+  const double simulated = static_cast<double>(steps) * options.dt;
+  result.cpu_per_simulated = result.cpu_seconds / simulated;
+  result.us_per_rod_step = 1e6 * result.cpu_seconds / static_cast<double>(steps) / system.rod_count;
+  result.peak_memory_mib = peak_memory_mib();
+  return result;
+}
+
+namespace {
+
+constexpr const char* kTableHeader =
+    "system   rods        dt   steps    CPU [s]  CPU-s/sim-s  us/rod/step  kicks/rod/s  peak [MiB]";
+
+void write_row(std::ostream& out, const Result& r) {
+  char line[160];
+  std::snprintf(line, sizeof line, "%-6s %6d %9.3g %7lld %10.3f %12.3f %12.3f %12lld %11.1f",
+                r.system.c_str(), r.rods, r.dt, static_cast<long long>(r.steps), r.cpu_seconds,
+                r.cpu_per_simulated, r.us_per_rod_step,
+                static_cast<long long>(r.kicks_per_rod_second), r.peak_memory_mib);
+  out << line << '\n';
+}
+
+constexpr const char* kCsvHeader =
+    "system,rods,dt_s,steps,cpu_s,wall_s,cpu_s_per_simulated_s,us_per_rod_step,"
+    "kicks_per_rod_s,peak_rss_mib";
+
+void write_csv_row(std::ostream& out, const Result& r) {
+  out << r.system << ',' << r.rods << ',' << format("%.6g", r.dt) << ',' << r.steps << ','
+      << format("%.4f", r.cpu_seconds) << ',' << format("%.4f", r.wall_seconds) << ','
+      << format("%.4f", r.cpu_per_simulated) << ',' << format("%.4f", r.us_per_rod_step) << ','
+      << r.kicks_per_rod_second << ',' << format("%.1f", r.peak_memory_mib) << '\n';
+}
+
+}  // namespace
+
+void write_table(std::ostream& out, const std::vector<Result>& results) {
+  out << kTableHeader << '\n';
+  for (const Result& r : results) write_row(out, r);
+}
+
+void write_csv(std::ostream& out, const std::vector<Result>& results) {
+  out << kCsvHeader << '\n';
+  for (const Result& r : results) write_csv_row(out, r);
+}
+
+int run(const Options& options, std::ostream& out) {
+  for (const std::string& name : options.systems) find_system(name);  // fail before running any
+  out << (options.csv ? kCsvHeader : kTableHeader) << '\n' << std::flush;
+  for (const std::string& name : options.systems) {
+    const Result result = run_system(name, options);
+    if (options.csv) {
+      write_csv_row(out, result);
+    } else {
+      write_row(out, result);
+    }
+    out << std::flush;
+  }
+  return 0;
+}
+
+}  // namespace rodsort::bench

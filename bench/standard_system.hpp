@@ -1,0 +1,48 @@
+#pragma once
+// The benchmark's standard systems, built by hand as engine::Model values (no YAML), so that the
+// figures measure the engine alone and stay comparable while the scenario layer evolves.
+//
+// "paper" systems are the paper's sorting setup: rod A with the collision kick (eps = 0.01 mm^-1),
+// a V trap of opening 120° and arm 10 rod lengths in a periodic square cell of side 19.3 rod
+// lengths, 319 rods. Larger systems scale the cell's side and the arm by k and the rod count by
+// k^2, so that density and geometry stay the paper's. "single" is one free rod, the cost floor of
+// a step with nothing to collide with but the plates.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/model.hpp"
+
+namespace rodsort::bench {
+
+struct SystemSpec {
+  std::string name;  ///< as given on the command line: "single", "319", "1276", "5104"
+  int rod_count;     ///< rods of type A
+  double box;        ///< side of the periodic square cell [mm]
+  double trap_arm;   ///< arm length of the V trap, 0 for no trap [mm]
+};
+
+/// The paper's cell side, 19.3 rod lengths [mm].
+inline constexpr double kPaperBox = 19.3 * 4.5;
+/// The paper's trap arm, 10 rod lengths [mm].
+inline constexpr double kPaperArm = 45.0;
+/// The paper's trap opening for the benchmark [degrees].
+inline constexpr double kTrapAngleDegrees = 120.0;
+/// Thickness of the trap walls [mm] (the scenario schema's default).
+inline constexpr double kTrapWallThickness = 1.0;
+/// The paper's collision kick [1/mm].
+inline constexpr double kPaperKickEps = 0.01;
+
+/// single, then the paper's system with side x1, x2, x4 (319, 1,276, 5,104 rods).
+std::vector<SystemSpec> standard_systems();
+
+/// The standard system of that name; throws std::invalid_argument naming the known ones.
+SystemSpec find_system(const std::string& name);
+
+/// The model of a system: the paper's drive and materials, rod A with the paper's kick, the trap
+/// centred in the cell, rods on a jittered lattice outside the walls with random headings (all
+/// drawn from `seed`). Throws std::runtime_error if the rods cannot be placed.
+engine::Model build_model(const SystemSpec& system, double dt, std::uint64_t seed);
+
+}  // namespace rodsort::bench

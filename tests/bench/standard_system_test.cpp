@@ -1,0 +1,71 @@
+#include "bench/standard_system.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "bench/lattice_placement.hpp"
+#include "engine/model.hpp"
+
+using namespace rodsort;
+using namespace rodsort::bench;
+
+namespace {
+
+double periodic(double d, double box) { return d - box * std::round(d / box); }
+
+/// Smallest gap between the surfaces of two rods' spheres, across the periodic edges [mm].
+double gap(const engine::Model& model, const engine::RodInit& a, const engine::RodInit& b) {
+  const auto& spheres = model.species[0].shape.spheres;
+  double smallest = 1e9;
+  for (const engine::Sphere& p : spheres) {
+    for (const engine::Sphere& q : spheres) {
+      const double dx = periodic(
+          a.x + p.axial * std::cos(a.heading) - b.x - q.axial * std::cos(b.heading), model.box_x);
+      const double dy = periodic(
+          a.y + p.axial * std::sin(a.heading) - b.y - q.axial * std::sin(b.heading), model.box_y);
+      smallest = std::min(smallest, std::hypot(dx, dy) - p.radius - q.radius);
+    }
+  }
+  return smallest;
+}
+
+}  // namespace
+
+TEST_CASE("standard systems keep the paper's density and trap", "[bench]") {
+  const auto systems = standard_systems();
+  REQUIRE(systems.size() == 4);
+  CHECK(find_system("319").box == Approx(86.85));
+  for (const SystemSpec& system : systems) {
+    if (system.name == "single") continue;
+    const double scale = system.box / kPaperBox;
+    CHECK(system.rod_count == Approx(319 * scale * scale));
+    CHECK(system.trap_arm == Approx(kPaperArm * scale));
+  }
+  CHECK_THROWS_WITH(find_system("320"), Catch::Contains("319"));
+}
+
+TEST_CASE("rods start inside the cell without touching each other", "[bench]") {
+  const engine::Model model = build_model(find_system("1276"), 1e-4, 3);
+  REQUIRE(model.rods.size() == 1276);
+  CHECK(model.walls.size() == 3);
+  for (std::size_t i = 0; i < model.rods.size(); ++i) {
+    const engine::RodInit& rod = model.rods[i];
+    CHECK((rod.x >= 0.0 && rod.x < model.box_x && rod.y >= 0.0 && rod.y < model.box_y));
+    for (std::size_t j = 0; j < i; ++j) {
+      if (std::hypot(periodic(rod.x - model.rods[j].x, model.box_x),
+                     periodic(rod.y - model.rods[j].y, model.box_y)) > 6.0) {
+        continue;
+      }
+      CHECK(gap(model, rod, model.rods[j]) >= kPlacementClearance - 1e-12);
+    }
+  }
+}
+
+TEST_CASE("placement is reproducible from the seed", "[bench]") {
+  const engine::Model a = build_model(find_system("319"), 1e-4, 5);
+  const engine::Model b = build_model(find_system("319"), 1e-4, 5);
+  const engine::Model c = build_model(find_system("319"), 1e-4, 6);
+  CHECK(a.rods.front().x == b.rods.front().x);
+  CHECK(a.rods.back().heading == b.rods.back().heading);
+  CHECK(a.rods.front().x != c.rods.front().x);
+}
