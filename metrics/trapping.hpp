@@ -20,7 +20,7 @@ namespace rodsort::metrics {
 /// Default window tau over which speeds are measured [s]: the paper's frame interval.
 inline constexpr double kDefaultWindow = 0.07;
 /// Default speed below which a rod counts as stationary [mm/s]; see docs/metrics.md.
-inline constexpr double kDefaultStationarySpeed = 1.0;
+inline constexpr double kDefaultStationarySpeed = 5.0;
 
 /// Whether a point of the plane lies in the trap (a trap::Obstacle's contains(), for instance).
 using InsidePredicate = std::function<bool(const Eigen::Vector2d&)>;
