@@ -11,7 +11,7 @@ using rodsort::kPi;
 using testing::frame_at;
 using testing::rod_at;
 
-TEST_CASE("wrap_angle maps differences into (-pi, pi]", "[metrics]") {
+TEST_CASE("wrap_angle maps differences into -pi < a <= pi", "[metrics]") {
   CHECK(wrap_angle(0.3) == Approx(0.3));
   CHECK(wrap_angle(2.0 * kPi + 0.3) == Approx(0.3));
   CHECK(wrap_angle(-2.0 * kPi - 0.3) == Approx(-0.3));
