@@ -1,4 +1,4 @@
-# Layering: app -> runner -> scenarios -> {trap, metrics} -> engine -> Bullet.
+# Layering: app -> runner -> render -> scenarios -> {trap, metrics} -> engine -> Bullet.
 #
 # Each layer is one library target whose include directory holds links to its own folder and to
 # the folders of the layers it may use, and nothing else. An include that points the wrong way

@@ -1,0 +1,37 @@
+#include "render/scene.hpp"
+
+#include <cstdio>
+
+#include "trap/obstacle.hpp"
+#include "trap/v_trap.hpp"
+
+namespace rodsort::render {
+
+Scene make_scene(const engine::Model& model, const trap::Obstacle* trap, std::string title) {
+  Scene scene;
+  scene.title = std::move(title);
+  scene.box_x = model.box_x;
+  scene.box_y = model.box_y;
+  for (std::size_t s = 0; s < model.species.size(); ++s) {
+    scene.species.push_back(
+        {model.species[s].name, model.species[s].shape, species_colour(static_cast<int>(s)), 0});
+  }
+  for (const engine::RodInit& rod : model.rods) {
+    ++scene.species[static_cast<std::size_t>(rod.species)].count;
+  }
+  scene.walls = model.walls;
+  // The Obstacle interface has no outline (the engine and the metrics never need one); the
+  // V-trap's area is its triangle of apex and arm ends.
+  if (const auto* v_trap = dynamic_cast<const trap::VTrap*>(trap)) {
+    scene.trap_area = {v_trap->apex(), v_trap->arm_end_left(), v_trap->arm_end_right()};
+  }
+  return scene;
+}
+
+std::string stationary_rule_text(double threshold_mm_per_s, double window_s) {
+  char text[96];
+  std::snprintf(text, sizeof text, "speed < %g mm/s over %g s", threshold_mm_per_s, window_s);
+  return text;
+}
+
+}  // namespace rodsort::render

@@ -1,0 +1,315 @@
+#include "render/top_view.hpp"
+
+#include <cairo-svg.h>
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace rodsort::render {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+constexpr const char* kFont = "sans-serif";
+constexpr const char* kEta = "\xCE\xB7";                // η
+constexpr const char* kSubscriptZero = "\xE2\x82\x80";  // ₀
+
+using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;
+
+void set_colour(cairo_t* cairo, const Colour& colour) {
+  cairo_set_source_rgb(cairo, colour.red, colour.green, colour.blue);
+}
+
+void set_font(cairo_t* cairo, double size, bool bold = false) {
+  cairo_select_font_face(cairo, kFont, CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cairo, size);
+}
+
+double text_width(cairo_t* cairo, const std::string& text) {
+  cairo_text_extents_t extents;
+  cairo_text_extents(cairo, text.c_str(), &extents);
+  return extents.x_advance;
+}
+
+/// Largest distance from a rod's centre of mass to a point of its outline [mm].
+double reach(const engine::RodShape& shape) {
+  double reach = 0.0;
+  for (const engine::Sphere& sphere : shape.spheres) {
+    reach = std::max(reach, std::abs(sphere.axial) + sphere.radius);
+  }
+  return reach;
+}
+
+struct RodLook {
+  Colour fill;
+  bool stationary;
+};
+
+/// One rod, centre and in-plane axis in mm, at the layout's scale: first the discs' strokes, then
+/// their fills over them, so that only the outer half of each stroke stays, on the union's outline.
+void draw_rod(cairo_t* cairo, const ViewLayout& layout, const engine::RodShape& shape,
+              const Eigen::Vector2d& centre, const Eigen::Vector2d& axis, const RodLook& look) {
+  cairo_new_path(cairo);
+  for (const engine::Sphere& sphere : shape.spheres) {
+    const Eigen::Vector2d at = layout.to_pixels(centre + sphere.axial * axis);
+    cairo_new_sub_path(cairo);
+    cairo_arc(cairo, at.x(), at.y(), sphere.radius * layout.scale, 0.0, kTwoPi);
+  }
+  const double edge =
+      look.stationary ? std::max(1.0, 0.12 * layout.scale) : std::max(0.5, 0.05 * layout.scale);
+  cairo_set_line_width(cairo, 2.0 * edge);
+  set_colour(cairo, look.stationary ? kStationaryColour : edge_colour(look.fill));
+  cairo_stroke_preserve(cairo);
+  set_colour(cairo, look.fill);
+  cairo_fill(cairo);
+  if (look.stationary) {
+    const Eigen::Vector2d at = layout.to_pixels(centre);
+    cairo_arc(cairo, at.x(), at.y(), std::max(1.2, 0.18 * layout.scale), 0.0, kTwoPi);
+    set_colour(cairo, kStationaryColour);
+    cairo_fill(cairo);
+  }
+}
+
+/// A rod and each of its periodic images that reaches into the cell (the caller clips to it).
+void draw_rod_with_images(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
+                          const engine::RodFrame& rod, const RodLook& look) {
+  const engine::RodShape& shape = scene.species[static_cast<std::size_t>(rod.species)].shape;
+  const double rod_reach = reach(shape);
+  // The axis projected on the plate: a rod tilted between the plates looks shorter from above.
+  const Eigen::Vector2d axis(rod.axis.x(), rod.axis.y());
+  for (const int shift_x : {-1, 0, 1}) {
+    for (const int shift_y : {-1, 0, 1}) {
+      const Eigen::Vector2d centre =
+          rod.position + Eigen::Vector2d(shift_x * scene.box_x, shift_y * scene.box_y);
+      const bool reaches_cell =
+          centre.x() + rod_reach > 0.0 && centre.x() - rod_reach < scene.box_x &&
+          centre.y() + rod_reach > 0.0 && centre.y() - rod_reach < scene.box_y;
+      if (reaches_cell) draw_rod(cairo, layout, shape, centre, axis, look);
+    }
+  }
+}
+
+void draw_wall(cairo_t* cairo, const ViewLayout& layout, const engine::Wall& wall) {
+  const Eigen::Vector2d centre(wall.center_x, wall.center_y);
+  const Eigen::Vector2d along =
+      wall.half_length * Eigen::Vector2d(std::cos(wall.yaw), std::sin(wall.yaw));
+  const Eigen::Vector2d across =
+      wall.half_thickness * Eigen::Vector2d(-std::sin(wall.yaw), std::cos(wall.yaw));
+  cairo_new_path(cairo);
+  const std::array<Eigen::Vector2d, 4> corners = {centre + along + across, centre - along + across,
+                                                  centre - along - across, centre + along - across};
+  for (const Eigen::Vector2d& corner : corners) {
+    const Eigen::Vector2d at = layout.to_pixels(corner);
+    cairo_line_to(cairo, at.x(), at.y());
+  }
+  cairo_close_path(cairo);
+  set_colour(cairo, kWallColour);
+  cairo_fill(cairo);
+}
+
+void draw_polygon(cairo_t* cairo, const ViewLayout& layout,
+                  const std::vector<Eigen::Vector2d>& corners, const Colour& colour) {
+  cairo_new_path(cairo);
+  for (const Eigen::Vector2d& corner : corners) {
+    const Eigen::Vector2d at = layout.to_pixels(corner);
+    cairo_line_to(cairo, at.x(), at.y());
+  }
+  cairo_close_path(cairo);
+  set_colour(cairo, colour);
+  cairo_fill(cairo);
+}
+
+/// One entry of the legend: a rod drawn as in the cell, and its label.
+struct LegendEntry {
+  int species;  ///< whose shape the swatch shows
+  RodLook look;
+  std::string label;
+  double x = 0.0, y = 0.0;  ///< top left of the entry [px]
+};
+
+/// The legend's entries placed in rows from `top`, wrapped at the layout's width. The cairo
+/// context only measures text.
+std::vector<LegendEntry> place_legend(cairo_t* cairo, const Scene& scene, const ViewLayout& layout,
+                                      double top) {
+  std::vector<LegendEntry> entries;
+  for (std::size_t s = 0; s < scene.species.size(); ++s) {
+    const SpeciesLook& species = scene.species[s];
+    entries.push_back({static_cast<int>(s),
+                       {species.colour, false},
+                       species.name + " (" + std::to_string(species.count) + " rods)"});
+  }
+  if (!scene.species.empty()) {
+    std::string label = "stationary";
+    if (!scene.stationary_rule.empty()) label += ": " + scene.stationary_rule;
+    entries.push_back({0, {kBackgroundColour, true}, label});
+  }
+  set_font(cairo, layout.font_size);
+  const double row_height = 1.6 * layout.font_size;
+  const double right = layout.width - layout.margin;
+  double x = layout.margin;
+  double y = top;
+  for (LegendEntry& entry : entries) {
+    const double swatch =
+        scene.species[static_cast<std::size_t>(entry.species)].shape.length * layout.scale;
+    const double width = swatch + 0.5 * layout.font_size + text_width(cairo, entry.label);
+    if (x > layout.margin && x + width > right) {
+      x = layout.margin;
+      y += row_height;
+    }
+    entry.x = x;
+    entry.y = y;
+    x += width + 1.5 * layout.font_size;
+  }
+  return entries;
+}
+
+std::string format_number(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+std::string status_line(const engine::Frame& frame, const FrameMarks& marks) {
+  std::string line = "t = " + format_number("%.2f", frame.time) + " s";
+  if (!marks.stationary.empty()) {
+    const auto stationary = std::count(marks.stationary.begin(), marks.stationary.end(), true);
+    line += "    N" + std::string(kSubscriptZero) + " = " + std::to_string(stationary);
+  }
+  line += "    " + std::string(kEta) + " = ";
+  line += marks.eta ? format_number("%.3f", *marks.eta) : std::string("\xE2\x80\x93");  // –
+  if (marks.eta_trap) {
+    line += "    " + std::string(kEta) + " in trap = " + format_number("%.3f", *marks.eta_trap);
+  }
+  return line;
+}
+
+int round_up_to_even(double value) {
+  const int whole = static_cast<int>(std::ceil(value));
+  return whole + (whole % 2);
+}
+
+SurfacePtr surface_ptr(cairo_surface_t* surface) { return {surface, &cairo_surface_destroy}; }
+ContextPtr context_ptr(cairo_t* cairo) { return {cairo, &cairo_destroy}; }
+
+void check_status(cairo_status_t status, const std::filesystem::path& path) {
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw std::runtime_error("cannot write " + path.string() + ": " +
+                             cairo_status_to_string(status));
+  }
+}
+
+}  // namespace
+
+Eigen::Vector2d ViewLayout::to_pixels(const Eigen::Vector2d& point_mm) const {
+  return {cell_left + point_mm.x() * scale, cell_top + cell_height - point_mm.y() * scale};
+}
+
+ViewLayout layout_view(const Scene& scene, const ViewOptions& options) {
+  assert(options.width_px >= kMinimumWidth);
+  assert(scene.box_x > 0.0 && scene.box_y > 0.0);
+  ViewLayout layout;
+  layout.width = round_up_to_even(options.width_px);
+  layout.margin = std::max(8.0, 0.02 * layout.width);
+  layout.font_size = std::clamp(layout.width / 55.0, 10.0, 28.0);
+  layout.cell_left = layout.margin;
+  layout.cell_width = layout.width - 2.0 * layout.margin;
+  layout.scale = layout.cell_width / scene.box_x;
+  layout.cell_height = scene.box_y * layout.scale;
+  layout.cell_top = layout.margin + 2.9 * layout.font_size;
+  layout.legend_top = layout.cell_top + layout.cell_height + 0.8 * layout.font_size;
+
+  const SurfacePtr scratch = surface_ptr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
+  const ContextPtr cairo = context_ptr(cairo_create(scratch.get()));
+  const std::vector<LegendEntry> legend =
+      place_legend(cairo.get(), scene, layout, layout.legend_top);
+  const double legend_bottom =
+      legend.empty() ? layout.legend_top : legend.back().y + 1.6 * layout.font_size;
+  layout.height = round_up_to_even(legend_bottom + layout.margin);
+  return layout;
+}
+
+void draw_top_view(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
+                   const engine::Frame& frame, const FrameMarks& marks) {
+  assert(marks.stationary.empty() || marks.stationary.size() == frame.rods.size());
+  set_colour(cairo, kBackgroundColour);
+  cairo_paint(cairo);
+
+  cairo_save(cairo);
+  cairo_rectangle(cairo, layout.cell_left, layout.cell_top, layout.cell_width, layout.cell_height);
+  set_colour(cairo, kCellColour);
+  cairo_fill_preserve(cairo);
+  cairo_clip(cairo);
+  if (!scene.trap_area.empty()) draw_polygon(cairo, layout, scene.trap_area, kTrapAreaColour);
+  for (std::size_t r = 0; r < frame.rods.size(); ++r) {
+    const engine::RodFrame& rod = frame.rods[r];
+    assert(rod.species >= 0 && static_cast<std::size_t>(rod.species) < scene.species.size());
+    const RodLook look{scene.species[static_cast<std::size_t>(rod.species)].colour,
+                       !marks.stationary.empty() && marks.stationary[r]};
+    draw_rod_with_images(cairo, layout, scene, rod, look);
+  }
+  for (const engine::Wall& wall : scene.walls) draw_wall(cairo, layout, wall);
+  cairo_restore(cairo);
+
+  cairo_rectangle(cairo, layout.cell_left, layout.cell_top, layout.cell_width, layout.cell_height);
+  cairo_set_line_width(cairo, std::max(1.0, layout.width / 800.0));
+  set_colour(cairo, kCellEdgeColour);
+  cairo_stroke(cairo);
+
+  set_colour(cairo, kTextColour);
+  set_font(cairo, 1.1 * layout.font_size, true);
+  cairo_move_to(cairo, layout.margin, layout.margin + 1.1 * layout.font_size);
+  cairo_show_text(cairo, scene.title.c_str());
+  set_font(cairo, layout.font_size);
+  cairo_move_to(cairo, layout.margin, layout.margin + 2.4 * layout.font_size);
+  cairo_show_text(cairo, status_line(frame, marks).c_str());
+
+  for (const LegendEntry& entry : place_legend(cairo, scene, layout, layout.legend_top)) {
+    const engine::RodShape& shape = scene.species[static_cast<std::size_t>(entry.species)].shape;
+    const double swatch = shape.length * layout.scale;
+    const double middle_y = entry.y + 0.8 * layout.font_size;
+    // The swatch's centre of mass sits where the whole rod, tip to tip, fits from entry.x.
+    const double centre_x = entry.x - shape.thick_tip * layout.scale;
+    const Eigen::Vector2d centre_mm(
+        (centre_x - layout.cell_left) / layout.scale,
+        (layout.cell_top + layout.cell_height - middle_y) / layout.scale);
+    draw_rod(cairo, layout, shape, centre_mm, Eigen::Vector2d::UnitX(), entry.look);
+    set_colour(cairo, kTextColour);
+    set_font(cairo, layout.font_size);
+    cairo_move_to(cairo, entry.x + swatch + 0.5 * layout.font_size,
+                  middle_y + 0.35 * layout.font_size);
+    cairo_show_text(cairo, entry.label.c_str());
+  }
+}
+
+void write_png(const std::filesystem::path& path, const ViewLayout& layout, const Scene& scene,
+               const engine::Frame& frame, const FrameMarks& marks) {
+  const SurfacePtr surface =
+      surface_ptr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height));
+  const ContextPtr cairo = context_ptr(cairo_create(surface.get()));
+  draw_top_view(cairo.get(), layout, scene, frame, marks);
+  check_status(cairo_status(cairo.get()), path);
+  check_status(cairo_surface_write_to_png(surface.get(), path.c_str()), path);
+}
+
+void write_svg(const std::filesystem::path& path, const ViewLayout& layout, const Scene& scene,
+               const engine::Frame& frame, const FrameMarks& marks) {
+  const SurfacePtr surface =
+      surface_ptr(cairo_svg_surface_create(path.c_str(), layout.width, layout.height));
+  check_status(cairo_surface_status(surface.get()), path);
+  {
+    const ContextPtr cairo = context_ptr(cairo_create(surface.get()));
+    draw_top_view(cairo.get(), layout, scene, frame, marks);
+    check_status(cairo_status(cairo.get()), path);
+  }
+  cairo_surface_finish(surface.get());
+  check_status(cairo_surface_status(surface.get()), path);
+}
+
+}  // namespace rodsort::render
