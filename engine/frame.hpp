@@ -3,6 +3,7 @@
 // metrics run the same on a live simulation and on frames read back from rods.csv.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
 namespace rodsort::engine {
