@@ -57,6 +57,7 @@ std::optional<MetricsRow> MetricsObserver::observe(const engine::Frame& frame) {
     row->mean_speed = speeds.empty() ? 0.0 : speed_sum / speeds.size();
     const int species_count = static_cast<int>(config_.species_names.size());
     row->counts = count_trapping(frame, stationary, inside, species_count);
+    row->stationary = stationary;
     if (has_trap) {
       row->efficiency = trapping_efficiency(row->counts, config_.species_area, config_.trap_area);
     } else {

@@ -40,6 +40,7 @@ TEST_CASE("MetricsObserver rows from frames every tau", "[metrics]") {
   CHECK(first->time == Approx(0.07));
   CHECK(first->window == Approx(0.07));
   CHECK(first->counts.all.stationary == 2);
+  CHECK(first->stationary == std::vector<bool>{true, false, true});
   CHECK(first->counts.all.inside == 1);  // rod 1 is at x = 35.7, not yet inside
   CHECK(first->efficiency.eta == Approx((2.0 + 1.5) / 400.0));
   CHECK(first->efficiency.eta_trap == Approx(2.0 / 400.0));
