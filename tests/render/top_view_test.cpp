@@ -5,68 +5,20 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/rod_shape.hpp"
-#include "engine/units.hpp"
 #include "render/png_pixels.hpp"
+#include "render/synthetic_run.hpp"
 #include "render/temp_directory.hpp"
-#include "trap/v_trap.hpp"
 
 using namespace rodsort;
+using render::testing::kBoxX;
+using render::testing::kBoxY;
 using render::testing::PngPixels;
 using render::testing::TempDirectory;
+using render::testing::test_frame;
+using render::testing::test_marks;
+using render::testing::TestScene;
 
 namespace {
-
-constexpr double kBoxX = 40.0;  // [mm]
-constexpr double kBoxY = 30.0;  // [mm]
-
-/// Rod A and rod RnT in a 40 x 30 mm cell, with a 90° trap of 12 mm arms in the middle.
-struct TestScene {
-  trap::VTrap trap = trap::centered_v_trap(kBoxX, kBoxY, kPi / 2.0, 12.0, 0.5);
-  engine::Model model;
-  render::Scene scene;
-
-  TestScene() {
-    model.box_x = kBoxX;
-    model.box_y = kBoxY;
-    model.species.push_back({"A",
-                             engine::make_rod_shape(engine::preset_a_profile(), kBrassDensity),
-                             {},
-                             engine::MaterialTable::kFirstRod});
-    model.species.push_back({"RnT",
-                             engine::make_rod_shape(engine::preset_rnt_profile(), kBrassDensity),
-                             {},
-                             engine::MaterialTable::kFirstRod});
-    model.walls = trap.walls();
-    scene = render::make_scene(model, &trap, "render test");
-  }
-};
-
-engine::RodFrame rod(int species, double x, double y, double heading) {
-  engine::RodFrame rod;
-  rod.species = species;
-  rod.position = {x, y};
-  rod.unwrapped = rod.position;
-  rod.axis = {std::cos(heading), std::sin(heading), 0.0};
-  rod.velocity.setZero();
-  rod.angular_velocity.setZero();
-  return rod;
-}
-
-/// Rod 0 (A) moving in the open, rod 1 (RnT) moving, rod 2 (A) across the left edge of the cell,
-/// rod 3 (A) stationary inside the trap.
-engine::Frame test_frame(const trap::VTrap& trap) {
-  engine::Frame frame;
-  frame.time = 1.25;
-  frame.rods.push_back(rod(0, 6.0, 6.0, 0.0));
-  frame.rods.push_back(rod(1, 34.0, 24.0, kPi / 2.0));
-  frame.rods.push_back(rod(0, 0.5, 26.0, 0.0));
-  const Eigen::Vector2d in_trap = trap.apex() + 4.0 * trap.bisector();
-  frame.rods.push_back(rod(0, in_trap.x(), in_trap.y(), kPi));
-  return frame;
-}
-
-render::FrameMarks test_marks() { return {{false, false, false, true}, 0.25, 0.2}; }
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path);

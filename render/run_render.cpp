@@ -1,0 +1,200 @@
+#include "render/run_render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+
+#include "metrics/rods_csv.hpp"
+#include "render/external_program.hpp"
+
+namespace rodsort::render {
+namespace {
+
+constexpr const char* kRodsCsv = "rods.csv";
+constexpr const char* kMovieFramesDirectory = "movie-frames";
+constexpr const char* kMovieFile = "movie.mp4";
+
+std::string format_time(double time) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", time);
+  return text;
+}
+
+FrameMarks marks_of(const std::optional<metrics::MetricsRow>& row) {
+  FrameMarks marks;
+  if (!row) return marks;
+  marks.stationary = row->stationary;
+  if (!std::isnan(row->efficiency.eta)) marks.eta = row->efficiency.eta;
+  if (!std::isnan(row->efficiency.eta_trap)) marks.eta_trap = row->efficiency.eta_trap;
+  return marks;
+}
+
+struct MarkedFrame {
+  long index = -1;  ///< in the run, from 0
+  engine::Frame frame;
+  FrameMarks marks;
+};
+
+/// A requested time and whether it has been drawn.
+struct Target {
+  double time;
+  bool done = false;
+};
+
+void make_directories(const std::filesystem::path& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) {
+    throw std::runtime_error("cannot create " + directory.string() + ": " + error.message());
+  }
+}
+
+/// Draws stills, once per frame however many requested times pick it.
+class StillWriter {
+ public:
+  StillWriter(const RenderRequest& request, const Scene& scene, const ViewLayout& layout,
+              std::filesystem::path directory, RenderResult& result)
+      : request_(request),
+        scene_(scene),
+        layout_(layout),
+        directory_(std::move(directory)),
+        result_(result) {}
+
+  void write(const MarkedFrame& marked) {
+    if (std::find(drawn_.begin(), drawn_.end(), marked.index) != drawn_.end()) return;
+    drawn_.push_back(marked.index);
+    const std::string name = still_name(marked.frame.time);
+    const std::filesystem::path png = directory_ / (name + ".png");
+    write_png(png, layout_, scene_, marked.frame, marked.marks);
+    result_.written.push_back(png);
+    if (request_.svg) {
+      const std::filesystem::path svg = directory_ / (name + ".svg");
+      write_svg(svg, layout_, scene_, marked.frame, marked.marks);
+      result_.written.push_back(svg);
+    }
+  }
+
+ private:
+  const RenderRequest& request_;
+  const Scene& scene_;
+  const ViewLayout& layout_;
+  std::filesystem::path directory_;
+  RenderResult& result_;
+  std::vector<long> drawn_;
+};
+
+void encode_movie(const std::filesystem::path& ffmpeg, const std::filesystem::path& frames,
+                  double fps, const std::filesystem::path& movie) {
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%.6g", fps);
+  const ProgramOutput encoded =
+      run_program({ffmpeg.string(), "-nostdin", "-y", "-loglevel", "error", "-framerate", rate,
+                   "-i", (frames / "%06d.png").string(), "-pix_fmt", "yuv420p", "-movflags",
+                   "+faststart", movie.string()});
+  if (encoded.exit_status != 0) {
+    throw std::runtime_error("ffmpeg failed (exit status " + std::to_string(encoded.exit_status) +
+                             ") making " + movie.string() + "; the frames are kept in " +
+                             frames.string() + ":\n" + last_lines(encoded.output, 10));
+  }
+}
+
+}  // namespace
+
+std::string still_name(double time) { return "frame-t" + format_time(time); }
+
+RenderResult render_run(const RenderRequest& request, const Scene& scene,
+                        const metrics::MetricsConfig& metrics, std::ostream* progress) {
+  RenderResult result;
+  const std::filesystem::path output =
+      request.output.empty() ? request.run_directory / "render" : request.output;
+  std::optional<std::filesystem::path> ffmpeg;
+  if (request.movie) {
+    ffmpeg = find_program("ffmpeg");
+    if (!ffmpeg) {
+      throw std::runtime_error(
+          "--movie needs ffmpeg, which is not on PATH: install it (Debian's ffmpeg; "
+          "scripts/install-deps does), or render stills without --movie");
+    }
+  }
+  const std::filesystem::path rods_path = request.run_directory / kRodsCsv;
+  std::ifstream rods_file(rods_path);
+  if (!rods_file) throw std::runtime_error("cannot open " + rods_path.string());
+  metrics::RodsCsvReader reader(rods_file, rods_path.string(), metrics.species_names);
+  metrics::MetricsObserver observer(metrics);
+
+  make_directories(output);
+  const ViewLayout layout = layout_view(scene, request.view);
+  StillWriter stills(request, scene, layout, output, result);
+
+  const bool first_and_last = request.times.empty();
+  std::vector<Target> targets;
+  if (first_and_last) {
+    targets = {{-std::numeric_limits<double>::infinity()}};
+  } else {
+    for (const double time : request.times) targets.push_back({time});
+    std::sort(targets.begin(), targets.end(),
+              [](const Target& a, const Target& b) { return a.time < b.time; });
+  }
+
+  const std::filesystem::path movie_frames = output / kMovieFramesDirectory;
+  if (request.movie) {
+    std::filesystem::remove_all(movie_frames);
+    make_directories(movie_frames);
+  }
+  long movie_frame_count = 0;
+
+  std::optional<MarkedFrame> previous;
+  MarkedFrame current;
+  long index = 0;
+  while (reader.next(current.frame)) {
+    current.index = index++;
+    current.marks = marks_of(observer.observe(current.frame));
+    for (Target& target : targets) {
+      if (target.done || current.frame.time < target.time) continue;
+      // The nearer of this frame and the previous one; a tie goes to the earlier.
+      const bool previous_nearer =
+          previous && target.time - previous->frame.time <= current.frame.time - target.time;
+      stills.write(previous_nearer ? *previous : current);
+      target.done = true;
+    }
+    if (request.movie && current.index % request.movie_every == 0) {
+      char name[32];
+      std::snprintf(name, sizeof name, "%06ld.png", movie_frame_count++);
+      write_png(movie_frames / name, layout, scene, current.frame, current.marks);
+      if (progress != nullptr && movie_frame_count % 500 == 0) {
+        *progress << "render: " << movie_frame_count
+                  << " movie frames (t = " << format_time(current.frame.time) << " s)\n";
+      }
+    }
+    previous = current;
+  }
+  if (!reader.error().empty()) throw std::runtime_error(reader.error());
+  if (!reader.warning().empty()) result.notes.push_back(reader.warning());
+  if (!previous) throw std::runtime_error(rods_path.string() + ": no frame to draw");
+
+  for (const Target& target : targets) {
+    if (target.done) continue;
+    if (!first_and_last) {
+      result.notes.push_back("t = " + format_time(target.time) +
+                             " s is after the run's last frame; drew that frame (t = " +
+                             format_time(previous->frame.time) + " s)");
+    }
+    stills.write(*previous);
+  }
+  if (first_and_last) stills.write(*previous);
+
+  if (request.movie) {
+    const std::filesystem::path movie = output / kMovieFile;
+    encode_movie(*ffmpeg, movie_frames, request.movie_fps, movie);
+    std::filesystem::remove_all(movie_frames);
+    result.written.push_back(movie);
+  }
+  return result;
+}
+
+}  // namespace rodsort::render

@@ -1,0 +1,137 @@
+#include "render/plot_script.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "metrics/critical_angle.hpp"
+#include "metrics/metrics_observer.hpp"
+#include "render/png_pixels.hpp"
+#include "render/synthetic_run.hpp"
+#include "render/temp_directory.hpp"
+
+using namespace rodsort;
+using render::testing::kFrameInterval;
+using render::testing::PngPixels;
+using render::testing::TempDirectory;
+using render::testing::TestScene;
+
+namespace {
+
+/// The plots need a python with matplotlib; CI installs it, so its absence is a failure.
+void require_plot_python() {
+  const render::PythonLookup lookup = render::find_plot_python();
+  if (!lookup.python) FAIL(lookup.error);
+  REQUIRE(render::find_plot_script());
+}
+
+/// rods.csv and metrics.csv of the synthetic run, metrics.csv as the metrics layer writes it.
+void write_run_with_metrics(const std::filesystem::path& directory, const TestScene& test,
+                            int frames) {
+  render::testing::write_test_run(directory, test, frames);
+  metrics::MetricsObserver observer(test.metrics_config());
+  std::ofstream out(directory / "metrics.csv");
+  out << observer.csv_header() << '\n';
+  for (int k = 0; k < frames; ++k) {
+    if (const auto row =
+            observer.observe(render::testing::test_frame(test.trap, kFrameInterval * k))) {
+      out << observer.csv_line(*row) << '\n';
+    }
+  }
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void check_png(const std::filesystem::path& path) {
+  INFO(path.string());
+  REQUIRE(std::filesystem::is_regular_file(path));
+  const PngPixels png(path);
+  CHECK(png.width() > 300);
+  CHECK(png.height() > 200);
+}
+
+}  // namespace
+
+TEST_CASE("The plot script draws eta(t), the trap population and P(dtheta) of a run",
+          "[render][plot]") {
+  require_plot_python();
+  const TestScene test;
+  const TempDirectory run;
+  write_run_with_metrics(run.path(), test, 12);
+  const render::ProgramOutput plotted = render::run_plot_script({run.path().string()});
+  INFO(plotted.output);
+  REQUIRE(plotted.exit_status == 0);
+  for (const char* name : {"eta", "population", "dtheta"}) {
+    check_png(run / "plots" / (std::string(name) + ".png"));
+    CHECK(read_text(run / "plots" / (std::string(name) + ".svg")).find("<svg") !=
+          std::string::npos);
+  }
+}
+
+TEST_CASE("The plot script names a missing column", "[render][plot]") {
+  require_plot_python();
+  const TempDirectory run;
+  std::ofstream(run / "metrics.csv") << "t,n_rods\n0.07,4\n";
+  const render::ProgramOutput plotted =
+      render::run_plot_script({run.path().string(), "--what", "eta"});
+  CHECK(plotted.exit_status == 1);
+  CHECK_THAT(plotted.output, Catch::Contains("metrics.csv: no column 'eta'") &&
+                                 Catch::Contains("the columns are: t, n_rods"));
+}
+
+TEST_CASE("The plot script finds theta_c of a sweep as the metrics layer does", "[render][plot]") {
+  require_plot_python();
+  const TempDirectory sweep;
+  // Two noise levels, two seeds per point; eta falls past 120° at the lower noise, past 110° at
+  // the higher one.
+  const std::vector<double> angles = {60, 80, 100, 110, 120, 130, 140};
+  const std::vector<std::vector<double>> etas = {{0.9, 0.88, 0.91, 0.86, 0.7, 0.2, 0.05},
+                                                 {0.85, 0.9, 0.8, 0.6, 0.1, 0.02, 0.0}};
+  const std::vector<double> noises = {0.01, 0.02};
+  std::ofstream csv(sweep / "sweep.csv");
+  csv << "point,trap.angle,species[0].noise.kick_eps,seed,status,eta_mean\n";
+  int point = 0;
+  for (std::size_t n = 0; n < noises.size(); ++n) {
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      for (const double offset : {-0.01, 0.01}) {
+        csv << "p" << point++ << ',' << angles[a] << ',' << noises[n] << ",1,done,"
+            << etas[n][a] + offset << '\n';
+      }
+    }
+  }
+  csv << "p" << point << ",150,0.01,1,failed,nan\n";
+  csv.close();
+
+  const render::ProgramOutput plotted = render::run_plot_script({sweep.path().string()});
+  INFO(plotted.output);
+  REQUIRE(plotted.exit_status == 0);
+  CHECK_THAT(plotted.output, Catch::Contains("1 point(s)"));
+  check_png(sweep / "plots" / "eta-theta.png");
+  check_png(sweep / "plots" / "thetac-eps.png");
+
+  std::ifstream theta_c(sweep / "plots" / "theta_c.csv");
+  std::string line;
+  std::getline(theta_c, line);
+  CHECK(line == "kick_eps,theta_c,below,above,plateau,reason");
+  for (std::size_t n = 0; n < noises.size(); ++n) {
+    std::vector<metrics::SweepPoint> points;
+    for (std::size_t a = 0; a < angles.size(); ++a) points.push_back({angles[a], etas[n][a]});
+    const metrics::CriticalAngle expected = metrics::critical_angle(points);
+    REQUIRE(expected.found);
+    REQUIRE(std::getline(theta_c, line));
+    double eps = 0.0, angle = 0.0, below = 0.0, above = 0.0, plateau = 0.0;
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf", &eps, &angle, &below, &above,
+                        &plateau) == 5);
+    CHECK(eps == Approx(noises[n]));
+    CHECK(angle == Approx(expected.angle).epsilon(1e-6));
+    CHECK(below == expected.below);
+    CHECK(above == expected.above);
+    CHECK(plateau == Approx(expected.plateau).epsilon(1e-6));
+  }
+}

@@ -1,0 +1,513 @@
+#!/usr/bin/env python3
+"""Plots of rodsort runs and sweeps, as PNG and SVG (matplotlib).
+
+`rodsort plot` runs this script; it can also be run by hand:
+
+    rodsort_plot.py RUN_DIR [RUN_DIR ...]  [--what eta,population,dtheta] [-o DIR]
+    rodsort_plot.py SWEEP_DIR              [--what eta-theta,thetac-eps]   [-o DIR]
+
+From a run directory (metrics.csv, rods.csv):
+  eta         eta(t), with eta in the trap and one line per species for mixtures
+  population  rods inside the trap per species over time (dashed: the stationary ones)
+  dtheta      P(dtheta), the distribution of orientation changes over tau (the paper's Fig. 2e-f),
+              one line per species, or per run when several runs are given
+From a sweep directory (sweep.csv):
+  eta-theta   time-averaged eta against the trap angle, one line per noise level, theta_c marked
+  thetac-eps  theta_c against the collision-kick noise eps
+theta_c follows metrics/critical_angle.cpp: the first downward crossing of half the mean eta of the
+three smallest angles, interpolated linearly; it is also written to theta_c.csv.
+
+Several run directories draw on the same axes (one line per run), for comparisons such as the
+paper's system sizes. Output goes to RUN_DIR/plots (SWEEP_DIR/plots), or to -o DIR.
+Species keep the colours of `rodsort render` (Okabe-Ito, colour-blind safe).
+"""
+
+import argparse
+import csv
+import math
+import os
+import sys
+
+RUN_KINDS = ("eta", "population", "dtheta")
+SWEEP_KINDS = ("eta-theta", "thetac-eps")
+
+# The Okabe-Ito palette in render/palette.cpp's order.
+SPECIES_COLOURS = ("#0072B2", "#E69F00", "#009E73", "#D55E00", "#CC79A7", "#56B4E9", "#F0E442")
+PLATEAU_POINTS = 3  # as metrics::critical_angle's default
+
+
+class PlotError(Exception):
+    """A problem the user can act on: a missing file or column, a sweep that cannot give a plot."""
+
+
+def colour(index):
+    return SPECIES_COLOURS[index % len(SPECIES_COLOURS)]
+
+
+# ---------------------------------------------------------------------------------------------
+# Reading
+
+
+class Table:
+    """A CSV file read whole: its header and its columns as lists of strings."""
+
+    def __init__(self, path):
+        self.path = path
+        if not os.path.isfile(path):
+            raise PlotError(f"{path}: no such file")
+        with open(path, newline="") as stream:
+            reader = csv.reader(stream)
+            try:
+                self.header = next(reader)
+            except StopIteration:
+                raise PlotError(f"{path}: the file is empty (no header line)") from None
+            rows = [row for row in reader if row]
+        # A run stopped while writing may leave a short last line: drop it.
+        if rows and len(rows[-1]) != len(self.header):
+            rows.pop()
+        for number, row in enumerate(rows, start=2):
+            if len(row) != len(self.header):
+                raise PlotError(
+                    f"{path}:{number}: {len(row)} fields, the header has {len(self.header)}")
+        self.rows = rows
+
+    def has(self, column):
+        return column in self.header
+
+    def require(self, column, why):
+        if column not in self.header:
+            raise PlotError(f"{self.path}: no column '{column}' ({why}); "
+                            f"the columns are: {', '.join(self.header)}")
+
+    def text(self, column):
+        index = self.header.index(column)
+        return [row[index] for row in self.rows]
+
+    def numbers(self, column, why="needed for this plot"):
+        self.require(column, why)
+        values = []
+        for number, value in enumerate(self.text(column), start=2):
+            try:
+                values.append(float(value))
+            except ValueError:
+                raise PlotError(f"{self.path}:{number}: column '{column}': "
+                                f"expected a number, got '{value}'") from None
+        return values
+
+
+def metrics_species(table):
+    """Species names of metrics.csv, from its per-species purity_<name> columns."""
+    return [column[len("purity_"):] for column in table.header if column.startswith("purity_")]
+
+
+def run_label(path):
+    return os.path.basename(os.path.normpath(path))
+
+
+def wrap_angle(angle):
+    """Into (-pi, pi], as metrics::wrap_angle."""
+    wrapped = math.remainder(angle, 2.0 * math.pi)
+    return math.pi if wrapped == -math.pi else wrapped
+
+
+def orientation_changes(run_dir, tau):
+    """Per species: the changes of in-plane orientation [degrees] of every rod over tau, and the
+    lag in frames and the real time it spans."""
+    path = os.path.join(run_dir, "rods.csv")
+    if not os.path.isfile(path):
+        raise PlotError(f"{path}: no such file (P(dtheta) needs the rods' frames)")
+    headings = {}  # rod -> list of headings, one per frame
+    species_of = {}
+    times = []
+    with open(path, newline="") as stream:
+        reader = csv.reader(stream)
+        header = next(reader, None)
+        if header is None:
+            raise PlotError(f"{path}: the file is empty (no header line)")
+        for column in ("t", "rod", "species", "ux", "uy"):
+            if column not in header:
+                raise PlotError(f"{path}: no column '{column}' (needed for P(dtheta)); "
+                                f"the columns are: {', '.join(header)}")
+        t, rod, species, ux, uy = (header.index(c) for c in ("t", "rod", "species", "ux", "uy"))
+        for number, row in enumerate(reader, start=2):
+            if len(row) != len(header):
+                break  # an incomplete last line of a stopped run
+            try:
+                time = float(row[t])
+                heading = math.atan2(float(row[uy]), float(row[ux]))
+            except ValueError:
+                raise PlotError(f"{path}:{number}: expected numbers in t, ux, uy") from None
+            if not times or time != times[-1]:
+                times.append(time)
+            headings.setdefault(row[rod], []).append(heading)
+            species_of.setdefault(row[rod], row[species])
+    if len(times) < 2:
+        raise PlotError(f"{path}: P(dtheta) needs at least two frames, found {len(times)}")
+    interval = (times[-1] - times[0]) / (len(times) - 1)
+    lag = max(1, round(tau / interval))
+    if lag >= len(times):
+        raise PlotError(f"{path}: the run holds {len(times)} frames, {interval:.3g} s apart: "
+                        f"too few for tau = {tau} s")
+    changes = {}
+    for rod, series in headings.items():
+        per_species = changes.setdefault(species_of[rod], [])
+        per_species.extend(math.degrees(wrap_angle(series[k + lag] - series[k]))
+                           for k in range(len(series) - lag))
+    return changes, lag, lag * interval
+
+
+def critical_angle(points):
+    """theta_c of (angle, eta) points, as metrics::critical_angle: a dict, or None with a reason."""
+    points = sorted(points)
+    if len(points) < 2:
+        return None, f"a critical angle needs at least two angles, got {len(points)}"
+    used = min(PLATEAU_POINTS, len(points))
+    plateau = sum(eta for _, eta in points[:used]) / used
+    half = 0.5 * plateau
+    if not plateau > 0.0:
+        return None, "eta at the smallest angles is not positive: nothing is trapped"
+    for (a_angle, a_eta), (b_angle, b_eta) in zip(points, points[1:]):
+        if a_eta >= half and b_eta < half:
+            angle = a_angle + (a_eta - half) / (a_eta - b_eta) * (b_angle - a_angle)
+            return {"angle": angle, "below": a_angle, "above": b_angle, "plateau": plateau,
+                    "half": half}, ""
+    return None, f"eta never falls below half its low-angle plateau ({half:.3g})"
+
+
+def find_column(table, candidates, what):
+    for column in candidates:
+        if table.has(column):
+            return column
+    raise PlotError(f"{table.path}: no column for {what} (looked for: {', '.join(candidates)}); "
+                    f"the columns are: {', '.join(table.header)}")
+
+
+def swept_column(table, ending):
+    """The column of a swept key ending with `ending` ('trap.angle', 'kick_eps'), or None."""
+    for column in table.header:
+        if column == ending or column.endswith("." + ending):
+            return column
+    return None
+
+
+class Sweep:
+    """sweep.csv: time-averaged eta per (eps, angle), averaged over seeds and repeated points."""
+
+    def __init__(self, sweep_dir):
+        self.table = Table(os.path.join(sweep_dir, "sweep.csv"))
+        table = self.table
+        self.angle_column = swept_column(table, "trap.angle")
+        if self.angle_column is None:
+            raise PlotError(f"{table.path}: the sweep is not over trap.angle (no such column); "
+                            f"the columns are: {', '.join(table.header)}")
+        self.eps_column = swept_column(table, "kick_eps")
+        self.eta_column = find_column(table, ("eta_mean", "eta"), "the time-averaged eta")
+        angles = table.numbers(self.angle_column)
+        etas = table.numbers(self.eta_column)
+        eps = table.numbers(self.eps_column) if self.eps_column else [None] * len(angles)
+        status = table.text("status") if table.has("status") else ["done"] * len(angles)
+        self.skipped = 0
+        grouped = {}
+        for angle, eta, noise, state in zip(angles, etas, eps, status):
+            if math.isnan(eta) or state not in ("done", "complete", "finished"):
+                self.skipped += 1
+                continue
+            grouped.setdefault(noise, {}).setdefault(angle, []).append(eta)
+        if not grouped:
+            raise PlotError(f"{table.path}: no finished point with a value of "
+                            f"'{self.eta_column}'")
+        # noise -> sorted [(angle, mean eta, standard error, samples)]
+        self.curves = {}
+        for noise, by_angle in grouped.items():
+            curve = []
+            for angle in sorted(by_angle):
+                values = by_angle[angle]
+                mean = sum(values) / len(values)
+                spread = 0.0
+                if len(values) > 1:
+                    variance = sum((v - mean) ** 2 for v in values) / (len(values) - 1)
+                    spread = math.sqrt(variance / len(values))
+                curve.append((angle, mean, spread, len(values)))
+            self.curves[noise] = curve
+
+    def noises(self):
+        return sorted(self.curves, key=lambda n: -math.inf if n is None else n)
+
+    def critical_angles(self):
+        """noise -> (theta_c dict or None, reason)."""
+        return {noise: critical_angle([(a, m) for a, m, _, _ in self.curves[noise]])
+                for noise in self.noises()}
+
+
+# ---------------------------------------------------------------------------------------------
+# Plotting
+
+
+def new_figure(plt):
+    figure, axes = plt.subplots(figsize=(6.4, 4.0), layout="constrained")
+    axes.grid(True, color="0.9", linewidth=0.6)
+    return figure, axes
+
+
+def save(plt, figure, out_dir, name, formats, written):
+    for extension in formats:
+        path = os.path.join(out_dir, f"{name}.{extension}")
+        figure.savefig(path, dpi=120)
+        written.append(path)
+    plt.close(figure)
+
+
+def plot_eta(plt, runs, out_dir, formats, written):
+    figure, axes = new_figure(plt)
+    several = len(runs) > 1
+    for index, run_dir in enumerate(runs):
+        table = Table(os.path.join(run_dir, "metrics.csv"))
+        t = table.numbers("t")
+        eta = table.numbers("eta", "eta(t)")
+        label = run_label(run_dir) if several else "all rods"
+        line_colour = colour(index) if several else "black"
+        axes.plot(t, eta, color=line_colour, linewidth=1.2, label=label)
+        if several:
+            continue
+        if table.has("eta_trap"):
+            axes.plot(t, table.numbers("eta_trap"), color="0.5", linewidth=1.0, linestyle="--",
+                      label="inside the trap")
+        species = metrics_species(table)
+        if len(species) > 1:
+            for s, name in enumerate(species):
+                column = f"eta_{name}"
+                if table.has(column):
+                    axes.plot(t, table.numbers(column), color=colour(s), linewidth=1.0,
+                              label=name)
+    axes.set_xlabel("t [s]")
+    axes.set_ylabel("trapping efficiency η")
+    axes.set_ylim(bottom=0.0)
+    axes.legend(frameon=False, fontsize="small")
+    save(plt, figure, out_dir, "eta", formats, written)
+
+
+def plot_population(plt, runs, out_dir, formats, written):
+    figure, axes = new_figure(plt)
+    several = len(runs) > 1
+    for index, run_dir in enumerate(runs):
+        table = Table(os.path.join(run_dir, "metrics.csv"))
+        t = table.numbers("t")
+        species = metrics_species(table)
+        if not species:
+            raise PlotError(f"{table.path}: no per-species columns (purity_<species>); "
+                            f"the columns are: {', '.join(table.header)}")
+        for s, name in enumerate(species):
+            line_colour = colour(index if several else s)
+            label = f"{run_label(run_dir)}: {name}" if several else name
+            axes.plot(t, table.numbers(f"n_trap_{name}", "rods inside the trap"),
+                      color=line_colour, linewidth=1.2, label=label)
+            if table.has(f"n_stationary_trap_{name}"):
+                axes.plot(t, table.numbers(f"n_stationary_trap_{name}"), color=line_colour,
+                          linewidth=1.0, linestyle="--")
+    axes.plot([], [], color="0.4", linestyle="--", label="stationary")
+    axes.set_xlabel("t [s]")
+    axes.set_ylabel("rods inside the trap")
+    axes.set_ylim(bottom=0.0)
+    axes.legend(frameon=False, fontsize="small")
+    save(plt, figure, out_dir, "population", formats, written)
+
+
+def plot_dtheta(plt, runs, out_dir, formats, written, tau):
+    figure, axes = new_figure(plt)
+    several = len(runs) > 1
+    edges = [-180.0 + 2.0 * k for k in range(181)]
+    spans = set()
+    for index, run_dir in enumerate(runs):
+        changes, lag, span = orientation_changes(run_dir, tau)
+        spans.add(round(span, 6))
+        species = sorted(changes)
+        for s, name in enumerate(species):
+            values = changes[name]
+            label = run_label(run_dir) if several else name
+            if several and len(species) > 1:
+                label = f"{run_label(run_dir)}: {name}"
+            axes.hist(values, bins=edges, density=True, histtype="step", linewidth=1.2,
+                      color=colour(index if several else s), label=label)
+    span_text = ", ".join(f"{span:g}" for span in sorted(spans))
+    axes.set_yscale("log")
+    axes.set_xlim(-180.0, 180.0)
+    axes.set_xticks(range(-180, 181, 60))
+    axes.set_xlabel(f"Δθ over {span_text} s [degrees]")
+    axes.set_ylabel("P(Δθ) [1/degree]")
+    axes.legend(frameon=False, fontsize="small")
+    save(plt, figure, out_dir, "dtheta", formats, written)
+
+
+def noise_label(sweep, noise):
+    return "all points" if noise is None else f"ε = {noise:g} mm⁻¹"
+
+
+def plot_eta_theta(plt, sweep, out_dir, formats, written):
+    figure, axes = new_figure(plt)
+    critical = sweep.critical_angles()
+    for index, noise in enumerate(sweep.noises()):
+        curve = sweep.curves[noise]
+        line_colour = colour(index)
+        result, _ = critical[noise]
+        label = noise_label(sweep, noise)
+        if result:
+            label += f": θc = {result['angle']:.1f}°"
+            axes.axvline(result["angle"], color=line_colour, linestyle=":", linewidth=1.0)
+        axes.errorbar([p[0] for p in curve], [p[1] for p in curve], yerr=[p[2] for p in curve],
+                      color=line_colour, marker="o", markersize=4, linewidth=1.2, capsize=2,
+                      label=label)
+    axes.set_xlabel("trap opening angle θ [degrees]")
+    axes.set_ylabel(f"time-averaged η ({sweep.eta_column})")
+    axes.set_ylim(bottom=0.0)
+    axes.legend(frameon=False, fontsize="small")
+    save(plt, figure, out_dir, "eta-theta", formats, written)
+
+
+def plot_thetac_eps(plt, sweep, out_dir, formats, written):
+    if sweep.eps_column is None or len(sweep.curves) < 2:
+        raise PlotError(f"{sweep.table.path}: theta_c against eps needs a sweep over "
+                        "species[...].noise.kick_eps with at least two values")
+    found = [(noise, result) for noise, (result, _) in sweep.critical_angles().items() if result]
+    if not found:
+        raise PlotError(f"{sweep.table.path}: no noise level has a critical angle "
+                        "(see theta_c.csv for why)")
+    figure, axes = new_figure(plt)
+    eps = [noise for noise, _ in found]
+    theta = [result["angle"] for _, result in found]
+    lower = [result["angle"] - result["below"] for _, result in found]
+    upper = [result["above"] - result["angle"] for _, result in found]
+    axes.errorbar(eps, theta, yerr=[lower, upper], color="black", marker="o", markersize=4,
+                  capsize=3, linewidth=1.2)
+    axes.set_xlabel(f"collision-kick noise ε [1/mm] ({sweep.eps_column})")
+    axes.set_ylabel("critical angle θc [degrees]")
+    save(plt, figure, out_dir, "thetac-eps", formats, written)
+
+
+def write_critical_angles(sweep, out_dir, written):
+    path = os.path.join(out_dir, "theta_c.csv")
+    with open(path, "w", newline="") as stream:
+        writer = csv.writer(stream, lineterminator="\n")
+        writer.writerow(["kick_eps", "theta_c", "below", "above", "plateau", "reason"])
+        for noise, (result, reason) in sweep.critical_angles().items():
+            eps = "" if noise is None else f"{noise:.9g}"
+            if result:
+                writer.writerow([eps] + [f"{result[k]:.9g}" for k in
+                                         ("angle", "below", "above", "plateau")] + [""])
+            else:
+                writer.writerow([eps, "nan", "nan", "nan", "nan", reason])
+    written.append(path)
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def parse_arguments(argv):
+    parser = argparse.ArgumentParser(
+        prog="rodsort plot", description=__doc__.split("\n\n")[0],
+        epilog="Kinds: " + ", ".join(RUN_KINDS) + " (run directories); " +
+        ", ".join(SWEEP_KINDS) + " (a sweep directory).")
+    parser.add_argument("paths", nargs="+", metavar="RUN_DIR|SWEEP_DIR",
+                        help="run directories (metrics.csv, rods.csv) or one sweep directory "
+                        "(sweep.csv)")
+    parser.add_argument("--what", default="",
+                        help="comma-separated kinds to draw (default: every kind the input has)")
+    parser.add_argument("-o", "--output", default="",
+                        help="directory for the plots (default: PATH/plots, or ./plots for "
+                        "several runs)")
+    parser.add_argument("--format", default="png,svg", help="comma-separated: png, svg, pdf")
+    parser.add_argument("--tau", type=float, default=0.07,
+                        help="window of P(dtheta) in seconds (default 0.07, the paper's)")
+    return parser.parse_args(argv)
+
+
+def main(argv):
+    arguments = parse_arguments(argv)
+    paths = arguments.paths
+    for path in paths:
+        if not os.path.isdir(path):
+            raise PlotError(f"{path}: not a directory")
+    is_sweep = [os.path.isfile(os.path.join(p, "sweep.csv")) for p in paths]
+    if any(is_sweep) and len(paths) > 1:
+        raise PlotError("give one sweep directory, or one or more run directories")
+    sweep_mode = is_sweep[0]
+    if not sweep_mode:
+        for path in paths:
+            if not os.path.isfile(os.path.join(path, "metrics.csv")):
+                raise PlotError(f"{path}: neither a run directory (metrics.csv) nor a sweep "
+                                "directory (sweep.csv)")
+    allowed = SWEEP_KINDS if sweep_mode else RUN_KINDS
+    kinds = [k.strip() for k in arguments.what.split(",") if k.strip()]
+    for kind in kinds:
+        if kind not in allowed:
+            other = RUN_KINDS if sweep_mode else SWEEP_KINDS
+            hint = (f" ('{kind}' is drawn from a {'run' if sweep_mode else 'sweep'} directory)"
+                    if kind in other else "")
+            raise PlotError(f"--what: unknown kind '{kind}' for a "
+                            f"{'sweep' if sweep_mode else 'run'} directory{hint}; "
+                            f"expected some of: {', '.join(allowed)}")
+    explicit = bool(kinds)
+    kinds = kinds or list(allowed)
+    formats = [f.strip() for f in arguments.format.split(",") if f.strip()]
+    for extension in formats:
+        if extension not in ("png", "svg", "pdf"):
+            raise PlotError(f"--format: unknown format '{extension}'; expected png, svg or pdf")
+    if not arguments.tau > 0.0:
+        raise PlotError(f"--tau: must be positive, got {arguments.tau}")
+
+    out_dir = arguments.output or (os.path.join(paths[0], "plots") if len(paths) == 1
+                                   else "plots")
+    os.makedirs(out_dir, exist_ok=True)
+
+    try:
+        import matplotlib
+    except ImportError:
+        raise PlotError(f"matplotlib is not installed for {sys.executable}: install Debian's "
+                        "python3-matplotlib (scripts/install-deps does), or point RODSORT_PYTHON "
+                        "at a python that has it") from None
+    matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "rodsort"  # identical SVGs for identical data
+    import matplotlib.pyplot as plt
+
+    written = []
+    if sweep_mode:
+        sweep = Sweep(paths[0])
+        if sweep.skipped:
+            print(f"note: {sweep.skipped} point(s) of {sweep.table.path} not finished or without "
+                  "eta were left out", file=sys.stderr)
+        write_critical_angles(sweep, out_dir, written)
+        for kind in kinds:
+            try:
+                if kind == "eta-theta":
+                    plot_eta_theta(plt, sweep, out_dir, formats, written)
+                else:
+                    plot_thetac_eps(plt, sweep, out_dir, formats, written)
+            except PlotError as error:
+                if explicit:
+                    raise
+                print(f"note: no {kind} plot: {error}", file=sys.stderr)
+    else:
+        for kind in kinds:
+            try:
+                if kind == "eta":
+                    plot_eta(plt, paths, out_dir, formats, written)
+                elif kind == "population":
+                    plot_population(plt, paths, out_dir, formats, written)
+                else:
+                    plot_dtheta(plt, paths, out_dir, formats, written, arguments.tau)
+            except PlotError as error:
+                if explicit:
+                    raise
+                print(f"note: no {kind} plot: {error}", file=sys.stderr)
+    for path in written:
+        print(f"wrote {path}")
+    if not written:
+        raise PlotError("nothing to plot")
+    return 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main(sys.argv[1:]))
+    except PlotError as error:
+        print(f"rodsort plot: error: {error}", file=sys.stderr)
+        sys.exit(1)
