@@ -1,0 +1,373 @@
+#include "scenarios/compile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/units.hpp"
+#include "scenarios/number_text.hpp"
+#include "scenarios/placement.hpp"
+#include "trap/v_trap.hpp"
+
+namespace rodsort::scenarios {
+namespace {
+
+std::string mm(double value) { return format_real(value) + " mm"; }
+
+std::string percent(double fraction) {
+  return format_real(std::round(fraction * 1000.0) / 10.0) + "%";
+}
+
+std::string at(const SourceLocation& where) { return " (" + where.to_string() + ")"; }
+
+std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnostics& diagnostics) {
+  switch (shape.kind) {
+    case ShapeSpec::Kind::preset:
+      if (shape.preset.value == "RnT") return engine::preset_rnt_profile(shape.thin_radius.value);
+      return engine::preset_a_profile();
+    case ShapeSpec::Kind::taper: {
+      const double length = shape.taper_length.value;
+      const double thick = shape.taper_thick_radius.value;
+      const double thin = shape.taper_thin_radius.value;
+      if (thin > thick) {
+        diagnostics.error(shape.taper_thin_radius.where, shape.taper_thin_radius.path,
+                          "must be <= thick_radius (" + mm(thick) + "), got " + mm(thin) +
+                              "; the axis runs from the thick to the thin end");
+        return std::nullopt;
+      }
+      // The end spheres must be the tips: the radius may not shrink faster than the centres move.
+      if (length - thick - thin < thick - thin || length <= thick + thin) {
+        diagnostics.error(shape.taper_length.where, shape.taper_length.path,
+                          "must be more than 2 x thick_radius (" + mm(2.0 * thick) +
+                              ") for a taper whose ends are its tips, got " + mm(length));
+        return std::nullopt;
+      }
+      return engine::linear_taper_profile(length, thick, thin,
+                                          static_cast<int>(shape.taper_spheres.value));
+    }
+    case ShapeSpec::Kind::spheres: {
+      engine::RodProfile profile;
+      for (const auto& [axial, radius] : shape.spheres.value)
+        profile.spheres.push_back({axial, radius});
+      return profile;
+    }
+  }
+  return std::nullopt;
+}
+
+void check_fits_gap(const engine::RodShape& shape, const SpeciesSpec& species,
+                    const ScenarioSpec& spec, Diagnostics& diagnostics) {
+  const double gap = spec.gap.value;
+  if (2.0 * shape.max_radius >= gap) {
+    diagnostics.error(species.shape.where, species.shape.path,
+                      "the rod is " + mm(2.0 * shape.max_radius) +
+                          " thick, which does not fit in the gap of " + mm(gap) +
+                          " between base and lid (drive.gap" + at(spec.gap.where) +
+                          "); the gap must exceed the rod's thickness");
+  }
+  if (shape.length <= gap) {
+    diagnostics.error(species.shape.where, species.shape.path,
+                      "the rod is " + mm(shape.length) + " long, no longer than the gap of " +
+                          mm(gap) + " (drive.gap" + at(spec.gap.where) +
+                          "), so it could stand on end; rods must be longer than the gap");
+  }
+}
+
+/// Steps in an interval; reports an interval shorter than dt, and warns when it is not a multiple.
+std::int64_t to_steps(const Sourced<double>& interval, double dt, Diagnostics& diagnostics) {
+  const double exact = interval.value / dt;
+  const auto steps = static_cast<std::int64_t>(std::llround(exact));
+  if (steps < 1) {
+    diagnostics.error(interval.where, interval.path,
+                      "must be at least one time step (run.dt = " + format_real(dt) + " s), got " +
+                          format_real(interval.value) + " s");
+    return 1;
+  }
+  if (std::abs(exact - static_cast<double>(steps)) > 1e-6 * exact) {
+    diagnostics.warning(interval.where, interval.path,
+                        format_real(interval.value) + " s is not a multiple of run.dt = " +
+                            format_real(dt) + " s; using " + std::to_string(steps) + " steps (" +
+                            format_real(static_cast<double>(steps) * dt) + " s)");
+  }
+  return steps;
+}
+
+struct Counts {
+  std::vector<int> per_species;
+  bool ok = true;
+};
+
+Counts count_rods(const ScenarioSpec& spec, const std::vector<engine::RodShape>& shapes,
+                  double trap_area, Diagnostics& diagnostics) {
+  Counts counts;
+  counts.per_species.assign(spec.species.size(), 0);
+  double auto_area = 0.0;  // total projected area of the species counted auto [mm^2]
+  double weighted_area = 0.0;
+  const SpeciesSpec* first_auto = nullptr;
+  for (std::size_t i = 0; i < spec.species.size(); ++i) {
+    const SpeciesSpec& species = spec.species[i];
+    if (!species.auto_count()) {
+      counts.per_species[i] = static_cast<int>(species.count.value.number);
+      continue;
+    }
+    if (!first_auto) first_auto = &species;
+    weighted_area += (species.fraction ? species.fraction->value : 1.0) * shapes[i].projected_area;
+  }
+  if (!first_auto) return counts;
+  if (spec.area_fraction) {
+    auto_area = spec.area_fraction->value * spec.box_size.value[0] * spec.box_size.value[1];
+  } else if (spec.trap) {
+    auto_area = spec.trap_area_ratio.value * trap_area;
+  } else {
+    diagnostics.error(first_auto->count.where, first_auto->count.path,
+                      "`count: auto` sets N = round(r A_t / a) from the trap's area, but there is "
+                      "no trap; give a number of rods, or population.area_fraction");
+    counts.ok = false;
+    return counts;
+  }
+  const double total = auto_area / weighted_area;
+  for (std::size_t i = 0; i < spec.species.size(); ++i) {
+    const SpeciesSpec& species = spec.species[i];
+    if (!species.auto_count()) continue;
+    const double count = (species.fraction ? species.fraction->value : 1.0) * total;
+    if (count > 1.0e6) {
+      diagnostics.error(species.count.where, species.count.path,
+                        "`count: auto` gives " + format_real(std::round(count)) +
+                            " rods, more than the 1000000 rodsort accepts");
+      counts.ok = false;
+      continue;
+    }
+    counts.per_species[i] = static_cast<int>(std::llround(count));
+  }
+  return counts;
+}
+
+PlacementRegion region_of(const std::string& word) {
+  if (word == "inside_trap") return PlacementRegion::inside_trap;
+  if (word == "outside_trap") return PlacementRegion::outside_trap;
+  return PlacementRegion::anywhere;
+}
+
+/// Refuses more rods than random placement can fit in a region.
+void check_crowding(const ScenarioSpec& spec, const std::vector<engine::RodShape>& shapes,
+                    const std::vector<int>& counts, double trap_area, Diagnostics& diagnostics) {
+  const double box_area = spec.box_size.value[0] * spec.box_size.value[1];
+  struct Region {
+    PlacementRegion region;
+    const char* description;
+    double area;
+  };
+  const Region regions[] = {
+      {PlacementRegion::anywhere, "the cell", box_area},
+      {PlacementRegion::inside_trap, "the trap", trap_area},
+      {PlacementRegion::outside_trap, "the cell outside the trap", box_area - trap_area}};
+  double total = 0.0;
+  for (std::size_t i = 0; i < counts.size(); ++i) total += counts[i] * shapes[i].projected_area;
+  for (const Region& region : regions) {
+    if (region.region != PlacementRegion::anywhere && !spec.trap) continue;
+    double covered = 0.0;
+    const SpeciesSpec* first = nullptr;
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+      if (region_of(spec.species[i].initial_region.value) != region.region) continue;
+      covered += counts[i] * shapes[i].projected_area;
+      if (!first) first = &spec.species[i];
+    }
+    if (region.region == PlacementRegion::anywhere) covered = total;
+    if (first == nullptr || region.area <= 0.0 || covered <= kMaxPlacementFraction * region.area) {
+      continue;
+    }
+    diagnostics.error(first->count.where, first->count.path,
+                      "the rods cover " + percent(covered / region.area) + " of " +
+                          region.description + " (" + format_real(std::round(covered)) + " of " +
+                          format_real(std::round(region.area)) +
+                          " mm^2), more than random placement can fit (" +
+                          percent(kMaxPlacementFraction) + "); use fewer rods or a larger cell");
+  }
+}
+
+}  // namespace
+
+std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnostics) {
+  const std::size_t errors_before = diagnostics.error_count();
+  Scenario scenario;
+  scenario.name = spec.name.value;
+  scenario.spec = spec;
+  engine::Model& model = scenario.model;
+  model.box_x = spec.box_size.value[0];
+  model.box_y = spec.box_size.value[1];
+  model.seed = static_cast<std::uint64_t>(spec.seed.value);
+  model.dt = spec.dt.value;
+  model.solver_iterations = static_cast<int>(spec.solver_iterations.value);
+
+  model.drive.frequency = spec.frequency.value;
+  model.drive.gap = spec.gap.value;
+  model.drive.amplitude =
+      spec.amplitude ? spec.amplitude->value
+                     : engine::Drive::amplitude_from_gamma(spec.gamma->value, spec.frequency.value);
+  if (model.drive.gamma() <= 1.0) {
+    const SourceLocation& where = spec.amplitude ? spec.amplitude->where : spec.gamma->where;
+    diagnostics.warning(where, spec.amplitude ? spec.amplitude->path : spec.gamma->path,
+                        "Gamma = " + format_real(model.drive.gamma()) +
+                            " <= 1: the base never accelerates downward faster than gravity, so "
+                            "the rods never leave it and do not move");
+  }
+  const double steps_per_period = 1.0 / (spec.frequency.value * spec.dt.value);
+  if (steps_per_period < kMinStepsPerDrivePeriod) {
+    diagnostics.error(
+        spec.dt.where, spec.dt.path,
+        format_real(spec.dt.value) + " s gives " +
+            format_real(std::round(steps_per_period * 10.0) / 10.0) +
+            " steps per drive period at " + format_real(spec.frequency.value) + " Hz; at least " +
+            format_real(kMinStepsPerDrivePeriod) + " are needed: use dt <= " +
+            format_real(1.0 / (kMinStepsPerDrivePeriod * spec.frequency.value)) + " s");
+  }
+
+  std::vector<engine::RodShape> shapes;
+  for (const SpeciesSpec& species : spec.species) {
+    try {
+      const auto profile = build_profile(species.shape, diagnostics);
+      if (profile) {
+        shapes.push_back(engine::make_rod_shape(*profile, species.density.value));
+        check_fits_gap(shapes.back(), species, spec, diagnostics);
+      }
+    } catch (const std::invalid_argument& e) {
+      diagnostics.error(species.shape.where, species.shape.path, e.what());
+    }
+  }
+  if (shapes.size() != spec.species.size()) return std::nullopt;
+
+  model.materials = engine::MaterialTable::paper();
+  for (const SpeciesSpec& species : spec.species) {
+    if (model.materials.index_of(species.material.value) < 0) {
+      model.materials.add_rod_material(species.material.value);
+    }
+  }
+  for (const MaterialPairSpec& pair : spec.materials) {
+    const int a = model.materials.index_of(pair.first);
+    const int b = model.materials.index_of(pair.second);
+    engine::ContactCoefficients coefficients = model.materials.get(a, b);
+    if (pair.friction) coefficients.friction = pair.friction->value;
+    if (pair.restitution) coefficients.restitution = pair.restitution->value;
+    model.materials.set(a, b, coefficients);
+  }
+  for (std::size_t i = 0; i < spec.species.size(); ++i) {
+    const SpeciesSpec& species = spec.species[i];
+    engine::Species out;
+    out.name = species.name.value;
+    out.shape = shapes[i];
+    out.noise.kick_eps = species.kick_eps.value;
+    out.noise.white_Dr = species.white_Dr.value;
+    out.material = model.materials.index_of(species.material.value);
+    model.species.push_back(std::move(out));
+  }
+
+  std::optional<trap::VTrap> v_trap;
+  if (spec.trap) {
+    const TrapSpec& t = *spec.trap;
+    const double angle = degrees_to_radians(t.angle.value);
+    const double direction = degrees_to_radians(t.direction.value);
+    v_trap = t.apex ? trap::VTrap({t.apex->value[0], t.apex->value[1]}, angle, t.arm_length.value,
+                                  t.wall_thickness.value, direction)
+                    : trap::centered_v_trap(model.box_x, model.box_y, angle, t.arm_length.value,
+                                            t.wall_thickness.value, direction);
+    if (const auto why =
+            v_trap->fit_error(model.box_x, model.box_y, trap::required_margin(shapes))) {
+      diagnostics.error(t.where, "trap", *why);
+    }
+    scenario.trap = std::make_shared<trap::VTrap>(*v_trap);
+    scenario.trap_area = v_trap->area();
+    model.walls = v_trap->walls();
+  }
+
+  for (const SpeciesSpec& species : spec.species) {
+    if (!spec.trap && species.initial_region.value != "anywhere") {
+      diagnostics.error(species.initial_region.where, species.initial_region.path,
+                        "`" + species.initial_region.value + "` needs a trap, but trap is none");
+    }
+    if (!spec.trap && species.initial_heading.value.is("toward_apex")) {
+      diagnostics.error(species.initial_heading.where, species.initial_heading.path,
+                        "`toward_apex` needs a trap, but trap is none");
+    }
+  }
+
+  const Counts counts = count_rods(spec, shapes, scenario.trap_area, diagnostics);
+  if (counts.ok) {
+    int total = 0;
+    for (const int count : counts.per_species) total += count;
+    if (total == 0) {
+      diagnostics.error(spec.species_where, "species", "the scenario has no rods");
+    }
+    check_crowding(spec, shapes, counts.per_species, scenario.trap_area, diagnostics);
+  }
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    scenario.species.push_back(
+        {counts.per_species[i], shapes[i].projected_area, shapes[i].mass, shapes[i].length});
+  }
+
+  const double dt = spec.dt.value;
+  scenario.run.duration = spec.duration.value;
+  scenario.run.steps = to_steps(spec.duration, dt, diagnostics);
+  OutputSettings& output = scenario.output;
+  output.frame_interval = spec.frame_interval.value;
+  output.frame_steps = to_steps(spec.frame_interval, dt, diagnostics);
+  output.trajectory_interval = spec.trajectory_interval.value;
+  output.trajectory_steps =
+      output.trajectory_interval > 0.0 ? to_steps(spec.trajectory_interval, dt, diagnostics) : 0;
+  output.checkpoint_interval = spec.checkpoint_interval.value;
+  output.checkpoint_steps =
+      std::max<std::int64_t>(1, std::llround(spec.checkpoint_interval.value / dt));
+  output.bullet_snapshots = spec.bullet_snapshots.value;
+  std::sort(output.bullet_snapshots.begin(), output.bullet_snapshots.end());
+  for (const double time : output.bullet_snapshots) {
+    if (time > spec.duration.value) {
+      diagnostics.error(spec.bullet_snapshots.where, spec.bullet_snapshots.path,
+                        "a snapshot at " + format_real(time) + " s is after the end of the run (" +
+                            format_real(spec.duration.value) + " s)");
+    }
+    output.snapshot_steps.push_back(std::llround(time / dt));
+  }
+  scenario.metrics.stationary_threshold = spec.stationary_threshold.value;
+  scenario.metrics.window = spec.metrics_window.value;
+  if (spec.metrics_window.value < spec.frame_interval.value * (1.0 - 1e-9)) {
+    diagnostics.error(spec.metrics_window.where, spec.metrics_window.path,
+                      "must be at least output.frame_interval (" +
+                          format_real(spec.frame_interval.value) + " s), got " +
+                          format_real(spec.metrics_window.value) +
+                          " s: speeds are measured between frames");
+  }
+
+  if (diagnostics.error_count() != errors_before) return std::nullopt;
+
+  std::vector<SpeciesPlacement> placements;
+  for (std::size_t i = 0; i < spec.species.size(); ++i) {
+    const SpeciesSpec& species = spec.species[i];
+    SpeciesPlacement placement;
+    placement.species = static_cast<int>(i);
+    placement.count = counts.per_species[i];
+    placement.shape = shapes[i];
+    placement.region = region_of(species.initial_region.value);
+    const NumberOrKeyword& heading = species.initial_heading.value;
+    placement.heading.kind = heading.is("random")        ? PlacementHeading::Kind::random
+                             : heading.is("toward_apex") ? PlacementHeading::Kind::toward_apex
+                                                         : PlacementHeading::Kind::fixed;
+    placement.heading.angle = degrees_to_radians(heading.number);
+    placements.push_back(placement);
+  }
+  PlacementCell cell{model.box_x, model.box_y, model.walls, scenario.trap.get(),
+                     v_trap ? std::optional<Eigen::Vector2d>(v_trap->apex()) : std::nullopt};
+  PlacementResult placed = place_rods(cell, placements, model.seed);
+  if (placed.failure) {
+    const SpeciesSpec& species = spec.species[static_cast<std::size_t>(placed.failure->species)];
+    diagnostics.error(species.count.where, species.count.path,
+                      "could place only " + std::to_string(placed.failure->placed) + " of " +
+                          std::to_string(placed.failure->requested) + " rods of species " +
+                          species.name.value + " without overlap (" +
+                          std::to_string(kPlacementAttempts) +
+                          " random draws failed for the next one); use fewer rods or more room");
+    return std::nullopt;
+  }
+  model.rods = std::move(placed.rods);
+  return scenario;
+}
+
+}  // namespace rodsort::scenarios

@@ -1,0 +1,502 @@
+#include "scenarios/schema.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "scenarios/number_text.hpp"
+
+namespace rodsort::scenarios {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+constexpr Range any_number() { return {}; }
+constexpr Range positive() { return {0.0, kInf, true, false}; }
+constexpr Range non_negative() { return {0.0, kInf, false, false}; }
+constexpr Range closed(double min, double max) { return {min, max, false, false}; }
+constexpr Range open(double min, double max) { return {min, max, true, true}; }
+constexpr Range half_open(double min, double max) { return {min, max, true, false}; }
+
+using V = ValueType;
+
+// The scenario format. Defaults are the paper's (Kumar et al., "Sorting motile rods by activity").
+std::vector<KeyInfo> scenario_keys() {
+  return {
+      {"name",
+       V::text,
+       "",
+       "",
+       {},
+       {},
+       "Name of the run: letters, digits, '.', '_' and '-'.",
+       "the file name without .yaml"},
+      {"seed",
+       V::integer,
+       "",
+       "1",
+       closed(0, 9.0e18),
+       {},
+       "Seed of every random stream: initial placement, collision kicks, white noise."},
+
+      {"box", V::section, "", "", {}, {}, "The periodic cell."},
+      {"box.size",
+       V::real_pair,
+       "mm",
+       "[86.85, 86.85]",
+       positive(),
+       {},
+       "Sides of the cell in x and y, periodic in both; one number for a square. Paper: 19.3 rod "
+       "lengths."},
+
+      {"drive", V::section, "", "", {}, {}, "Vertical vibration of base and lid."},
+      {"drive.frequency",
+       V::real,
+       "Hz",
+       "200",
+       positive(),
+       {},
+       "f: base height z_b(t) = A cos(2 pi f t), lid at z_b(t) + gap."},
+      {"drive.gamma",
+       V::real,
+       "",
+       "7",
+       positive(),
+       {},
+       "Dimensionless peak acceleration Gamma = A (2 pi f)^2 / g. Give gamma or amplitude, not "
+       "both.",
+       "7, unless amplitude is given"},
+      {"drive.amplitude",
+       V::real,
+       "mm",
+       "",
+       positive(),
+       {},
+       "A, the amplitude of the base's motion, instead of gamma.",
+       "from gamma (0.0435 at the "
+       "paper's 7 and 200 Hz)"},
+      {"drive.gap",
+       V::real,
+       "mm",
+       "1.2",
+       positive(),
+       {},
+       "w: height of the lid above the base. Rods stop propelling when their thick end no longer "
+       "reaches the lid."},
+
+      {"population", V::section, "", "", {}, {}, "How many rods `count: auto` makes."},
+      {"population.trap_area_ratio",
+       V::real,
+       "",
+       "1.2",
+       positive(),
+       {},
+       "r = phi_r / F: total projected area of the species counted `auto`, divided by the trap "
+       "area A_t, so N = round(r A_t / a) for one species. Paper: 1.2, which keeps the trap from "
+       "exhausting the rods."},
+      {"population.area_fraction",
+       V::real,
+       "",
+       "",
+       open(0, 1),
+       {},
+       "phi_r: total projected area of the species counted `auto`, divided by the cell's area. "
+       "Replaces trap_area_ratio; needed for `count: auto` when `trap: none`.",
+       "none"},
+
+      {"species",
+       V::section_list,
+       "",
+       "[{name: A, shape: {preset: A}}]",
+       {},
+       {},
+       "The kinds of rods, each with its shape, count and noise.",
+       "one species: rod A, count auto"},
+      {"species[].name",
+       V::text,
+       "",
+       "",
+       {},
+       {},
+       "Name of the species, used in output columns; unique.",
+       "the preset's name, else species<i>"},
+      {"species[].shape",
+       V::section,
+       "",
+       "",
+       {},
+       {},
+       "Profile of the rod: a `preset`, a `taper`, or explicit `spheres` (one of the three)."},
+      {"species[].shape.preset",
+       V::choice,
+       "",
+       "",
+       {},
+       {"A", "RnT"},
+       "A: the paper's rod, 9 spheres with radii 0.55 -> 0.20 mm, 4.5 mm tip to tip. RnT: 3.5 mm, "
+       "thick half r = 0.55 mm, thin half r = thin_radius.",
+       "A, when neither taper nor spheres is given"},
+      {"species[].shape.thin_radius",
+       V::real,
+       "mm",
+       "0.3",
+       half_open(0, 0.55),
+       {},
+       "Radius of the thin half of the RnT preset (RnT only)."},
+      {"species[].shape.taper",
+       V::section,
+       "",
+       "",
+       {},
+       {},
+       "A linear taper: spheres with radii linear from the thick to the thin end."},
+      {"species[].shape.taper.length",
+       V::real,
+       "mm",
+       "",
+       positive(),
+       {},
+       "Tip to tip (required with taper)."},
+      {"species[].shape.taper.thick_radius",
+       V::real,
+       "mm",
+       "",
+       positive(),
+       {},
+       "Radius of the sphere at the thick end (required with taper)."},
+      {"species[].shape.taper.thin_radius",
+       V::real,
+       "mm",
+       "",
+       positive(),
+       {},
+       "Radius of the sphere at the thin end (required with taper)."},
+      {"species[].shape.taper.spheres",
+       V::integer,
+       "",
+       "9",
+       closed(2, 200),
+       {},
+       "Number of spheres, evenly spaced."},
+      {"species[].shape.spheres",
+       V::sphere_list,
+       "mm",
+       "",
+       any_number(),
+       {},
+       "Explicit spheres [axial position, radius], the axial position growing from the thick to "
+       "the thin end (any origin).",
+       "none"},
+      {"species[].density",
+       V::real,
+       "g/mm^3",
+       "8.5e-3",
+       positive(),
+       {},
+       "Density of the rod's material (brass)."},
+      {"species[].material",
+       V::text,
+       "",
+       "rod",
+       {},
+       {},
+       "Contact material of the rods in the `materials` pair table; a new name starts with the "
+       "values of `rod`."},
+      {"species[].count",
+       V::integer,
+       "",
+       "auto",
+       non_negative(),
+       {"auto"},
+       "Number of rods, or `auto`: the species counted auto share the area set by `population` "
+       "(split by `fraction`)."},
+      {"species[].fraction",
+       V::real,
+       "",
+       "",
+       half_open(0, 1),
+       {},
+       "Number fraction of this species among those counted `auto`; required when several are, "
+       "and then they must add up to 1.",
+       "1 when it is the only species counted auto"},
+      {"species[].noise", V::section, "", "", {}, {}, "Angular noise of the rods."},
+      {"species[].noise.kick_eps",
+       V::real,
+       "1/mm",
+       "0.01",
+       non_negative(),
+       {},
+       "Collision kick: at every impact on base or lid, omega_z += s eps v_rel, s = +-1. Paper: "
+       "0.01."},
+      {"species[].noise.white_Dr",
+       V::real,
+       "rad^2/s",
+       "0",
+       non_negative(),
+       {},
+       "White angular noise: rotational diffusion coefficient D_r (the paper's sorting runs)."},
+      {"species[].initial", V::section, "", "", {}, {}, "Where the rods start."},
+      {"species[].initial.region",
+       V::choice,
+       "",
+       "anywhere",
+       {},
+       {"anywhere", "inside_trap", "outside_trap"},
+       "Where the centres of the rods are drawn, uniformly; never overlapping a wall or a rod."},
+      {"species[].initial.heading",
+       V::real,
+       "degrees",
+       "random",
+       closed(-360, 360),
+       {"random", "toward_apex"},
+       "Direction from the thick to the thin end, from +x: isotropic (`random`), pointing at the "
+       "trap's apex (`toward_apex`), or this angle."},
+
+      {"trap",
+       V::section_or_none,
+       "",
+       "none",
+       {},
+       {"none"},
+       "The V-shaped trap: two thin walls spanning the gap, or `none`."},
+      {"trap.angle",
+       V::real,
+       "degrees",
+       "",
+       open(0, 180),
+       {},
+       "Opening angle theta between the arms (required with a trap). Paper: 20 to 160."},
+      {"trap.arm_length",
+       V::real,
+       "mm",
+       "45",
+       positive(),
+       {},
+       "L, along the inner face from the apex. Paper: 10 rod lengths. A_t = L^2 sin(theta) / 2."},
+      {"trap.wall_thickness",
+       V::real,
+       "mm",
+       "1",
+       positive(),
+       {},
+       "Thickness of the walls, which lie outside the triangle A_t."},
+      {"trap.apex",
+       V::real_pair,
+       "mm",
+       "",
+       any_number(),
+       {},
+       "Position of the apex in the cell.",
+       "centred: apex and middle of the opening equally far from the cell's centre"},
+      {"trap.direction",
+       V::real,
+       "degrees",
+       "45",
+       closed(-360, 360),
+       {},
+       "Direction of the bisector from the apex into the opening, from +x. Along the cell's "
+       "diagonal (45) the paper's widest traps (160 degrees, 45 mm arms) fit in its 86.85 mm "
+       "cell; along an edge (0) only those up to about 120 degrees do."},
+
+      {"materials",
+       V::free_map,
+       "",
+       "{}",
+       {},
+       {},
+       "Pair table of contact coefficients, keyed `a-b` by material names: base, lid, wall (the "
+       "trap), rod, and the species' materials. Unlisted pairs keep their defaults.",
+       "the paper's: rod-rod 0.05/0.3, rod-base 0.03/0.1, rod-lid 0.01/0.1, rod-wall 0.03/0.65"},
+      {"materials.*", V::section, "", "", {}, {}, "Coefficients of one pair, e.g. `rod-wall`."},
+      {"materials.*.friction",
+       V::real,
+       "",
+       "",
+       non_negative(),
+       {},
+       "Coulomb friction coefficient.",
+       "the pair's default"},
+      {"materials.*.restitution",
+       V::real,
+       "",
+       "",
+       closed(0, 1),
+       {},
+       "Normal coefficient of restitution.",
+       "the pair's default"},
+
+      {"run", V::section, "", "", {}, {}, "Length and time step of the simulation."},
+      {"run.duration", V::real, "s", "300", positive(), {}, "Simulated time."},
+      {"run.dt",
+       V::real,
+       "s",
+       "1.0e-4",
+       positive(),
+       {},
+       "Time step; at least 20 steps per drive period."},
+      {"run.solver_iterations",
+       V::integer,
+       "",
+       "10",
+       closed(1, 1000),
+       {},
+       "Iterations of Bullet's contact solver per step."},
+
+      {"output", V::section, "", "", {}, {}, "What the run writes, and how often."},
+      {"output.frame_interval",
+       V::real,
+       "s",
+       "0.07",
+       positive(),
+       {},
+       "Interval between frames in rods.csv (the paper's camera: 0.07 s); a multiple of dt."},
+      {"output.trajectory_interval",
+       V::real,
+       "s",
+       "0.7",
+       non_negative(),
+       {},
+       "Interval between frames of the sphere trajectory for OVITO/VMD; 0 for none."},
+      {"output.bullet_snapshots",
+       V::real_list,
+       "s",
+       "[]",
+       non_negative(),
+       {},
+       "Simulated times at which to write .bullet snapshots of the world."},
+      {"output.checkpoint_interval",
+       V::real,
+       "s",
+       "10",
+       positive(),
+       {},
+       "Simulated time between checkpoints (one is also written when the run is stopped)."},
+
+      {"metrics", V::section, "", "", {}, {}, "Trapping measurements."},
+      {"metrics.window",
+       V::real,
+       "s",
+       "0.07",
+       positive(),
+       {},
+       "tau: a rod's speed is its displacement over this window; a multiple of frame_interval."},
+      {"metrics.stationary_threshold",
+       V::real,
+       "mm/s",
+       "1",
+       non_negative(),
+       {},
+       "A rod is stationary (the paper's zero velocity) when its speed is below this."},
+
+      {"derived",
+       V::any,
+       "",
+       "",
+       {},
+       {},
+       "Values computed from the others (amplitude, rod counts, areas, masses), written into "
+       "resolved scenarios for the record; ignored when read.",
+       "none"},
+  };
+}
+
+std::vector<KeyInfo> sweep_keys() {
+  return {
+      {"name",
+       V::text,
+       "",
+       "",
+       {},
+       {},
+       "Name of the sweep: letters, digits, '.', '_' and '-'.",
+       "the file name without .yaml"},
+      {"base",
+       V::any,
+       "",
+       "",
+       {},
+       {},
+       "The scenario every point starts from: a file path, relative to the sweep file, or the "
+       "scenario's keys inline (required)."},
+      {"set",
+       V::any,
+       "",
+       "{}",
+       {},
+       {},
+       "Values every point takes, on top of the base: a map from key paths to values "
+       "(`run.duration: "
+       "1000`)."},
+      {"grid",
+       V::any,
+       "",
+       "",
+       {},
+       {},
+       "A list of axes; the points are every combination of one value per axis. An axis is a map "
+       "from scenario key paths (`trap.angle`, `species[0].noise.kick_eps`) to lists of values; "
+       "keys in one axis change together, so their lists have one length. A list may be written "
+       "`{from: 20, to: 160, step: 10}` (both ends included) (required)."},
+  };
+}
+
+}  // namespace
+
+bool Range::contains(double value) const {
+  const bool above = min_open ? value > min : value >= min;
+  const bool below = max_open ? value < max : value <= max;
+  return above && below;
+}
+
+bool Range::unbounded() const { return std::isinf(min) && std::isinf(max); }
+
+std::string Range::describe() const {
+  if (unbounded()) return "";
+  if (std::isinf(max)) return (min_open ? "> " : ">= ") + format_real(min);
+  if (std::isinf(min)) return (max_open ? "< " : "<= ") + format_real(max);
+  return std::string("in ") + (min_open ? "(" : "[") + format_real(min) + ", " + format_real(max) +
+         (max_open ? ")" : "]");
+}
+
+Schema::Schema(std::string_view title, std::vector<KeyInfo> keys)
+    : title_(title), keys_(std::move(keys)) {}
+
+const KeyInfo* Schema::find(std::string_view path) const {
+  const auto it = std::find_if(keys_.begin(), keys_.end(),
+                               [&](const KeyInfo& key) { return key.path == path; });
+  return it == keys_.end() ? nullptr : &*it;
+}
+
+const KeyInfo& Schema::at(std::string_view path) const {
+  const KeyInfo* key = find(path);
+  assert(key != nullptr && "every key the program reads is in the schema");
+  return *key;
+}
+
+std::vector<const KeyInfo*> Schema::children(std::string_view parent) const {
+  std::vector<const KeyInfo*> rows;
+  for (const KeyInfo& key : keys_) {
+    const std::size_t dot = key.path.rfind('.');
+    const std::string_view key_parent =
+        dot == std::string_view::npos ? std::string_view{} : key.path.substr(0, dot);
+    if (key_parent == parent) rows.push_back(&key);
+  }
+  return rows;
+}
+
+const Schema& scenario_schema() {
+  static const Schema schema("Scenario file", scenario_keys());
+  return schema;
+}
+
+const Schema& sweep_schema() {
+  static const Schema schema("Sweep file", sweep_keys());
+  return schema;
+}
+
+std::string join_path(std::string_view parent, std::string_view key) {
+  if (parent.empty()) return std::string(key);
+  return std::string(parent) + "." + std::string(key);
+}
+
+}  // namespace rodsort::scenarios

@@ -1,0 +1,263 @@
+#include "scenarios/scenario.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+
+#include "engine/units.hpp"
+#include "trap/obstacle.hpp"
+
+using namespace rodsort;
+using namespace rodsort::scenarios;
+
+namespace {
+
+Scenario load_ok(const std::string& yaml, const std::vector<std::string>& set = {}) {
+  Diagnostics diagnostics;
+  std::vector<Override> overrides;
+  for (const std::string& option : set) overrides.push_back(*parse_set_option(option, diagnostics));
+  LoadResult result = load_scenario_text(yaml, "test.yaml", overrides);
+  INFO(format_diagnostics(result.diagnostics));
+  REQUIRE(result.ok());
+  return std::move(*result.scenario);
+}
+
+std::string errors_of(const std::string& yaml, const std::vector<std::string>& set = {}) {
+  Diagnostics diagnostics;
+  std::vector<Override> overrides;
+  for (const std::string& option : set) {
+    if (auto parsed = parse_set_option(option, diagnostics)) overrides.push_back(*parsed);
+  }
+  if (diagnostics.has_errors()) return format_diagnostics(diagnostics.all());
+  const LoadResult result = load_scenario_text(yaml, "test.yaml", overrides);
+  CHECK_FALSE(result.ok());
+  return format_diagnostics(result.diagnostics);
+}
+
+/// Every field of two models, exactly.
+void check_same_model(const engine::Model& a, const engine::Model& b) {
+  CHECK(a.box_x == b.box_x);
+  CHECK(a.box_y == b.box_y);
+  CHECK(a.drive.frequency == b.drive.frequency);
+  CHECK(a.drive.amplitude == b.drive.amplitude);
+  CHECK(a.drive.gap == b.drive.gap);
+  CHECK(a.dt == b.dt);
+  CHECK(a.seed == b.seed);
+  CHECK(a.solver_iterations == b.solver_iterations);
+  REQUIRE(a.species.size() == b.species.size());
+  for (std::size_t i = 0; i < a.species.size(); ++i) {
+    const engine::Species& s = a.species[i];
+    const engine::Species& t = b.species[i];
+    CHECK(s.name == t.name);
+    CHECK(s.material == t.material);
+    CHECK(s.noise.kick_eps == t.noise.kick_eps);
+    CHECK(s.noise.white_Dr == t.noise.white_Dr);
+    CHECK(s.shape.mass == t.shape.mass);
+    CHECK(s.shape.inertia_transverse == t.shape.inertia_transverse);
+    REQUIRE(s.shape.spheres.size() == t.shape.spheres.size());
+    for (std::size_t k = 0; k < s.shape.spheres.size(); ++k) {
+      CHECK(s.shape.spheres[k].axial == t.shape.spheres[k].axial);
+      CHECK(s.shape.spheres[k].radius == t.shape.spheres[k].radius);
+    }
+  }
+  REQUIRE(a.rods.size() == b.rods.size());
+  for (std::size_t i = 0; i < a.rods.size(); ++i) {
+    CHECK(a.rods[i].species == b.rods[i].species);
+    CHECK(a.rods[i].x == b.rods[i].x);
+    CHECK(a.rods[i].y == b.rods[i].y);
+    CHECK(a.rods[i].heading == b.rods[i].heading);
+  }
+  REQUIRE(a.walls.size() == b.walls.size());
+  for (std::size_t i = 0; i < a.walls.size(); ++i) {
+    CHECK(a.walls[i].center_x == b.walls[i].center_x);
+    CHECK(a.walls[i].center_y == b.walls[i].center_y);
+    CHECK(a.walls[i].half_length == b.walls[i].half_length);
+    CHECK(a.walls[i].half_thickness == b.walls[i].half_thickness);
+    CHECK(a.walls[i].yaw == b.walls[i].yaw);
+  }
+  REQUIRE(a.materials.names() == b.materials.names());
+  const auto count = static_cast<int>(a.materials.names().size());
+  for (int i = 0; i < count; ++i) {
+    for (int j = 0; j < count; ++j) {
+      CHECK(a.materials.get(i, j).friction == b.materials.get(i, j).friction);
+      CHECK(a.materials.get(i, j).restitution == b.materials.get(i, j).restitution);
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("defaults are the paper's values", "[scenario]") {
+  const Scenario scenario = load_ok("trap: {angle: 120}\n");
+  const engine::Model& model = scenario.model;
+  CHECK(scenario.name == "test");
+  CHECK(model.box_x == 86.85);
+  CHECK(model.box_y == 86.85);
+  CHECK(model.drive.frequency == 200.0);
+  CHECK(model.drive.gap == 1.2);
+  // Gamma = A (2 pi f)^2 / g = 7 at f = 200 Hz.
+  CHECK(model.drive.amplitude == Approx(0.0435).epsilon(0.002));
+  CHECK(model.drive.gamma() == Approx(7.0).epsilon(1e-12));
+  CHECK(model.dt == 1.0e-4);
+  REQUIRE(model.species.size() == 1);
+  CHECK(model.species[0].name == "A");
+  CHECK(model.species[0].noise.kick_eps == 0.01);
+  CHECK(model.species[0].noise.white_Dr == 0.0);
+  CHECK(model.species[0].shape.length == Approx(4.5));
+  CHECK(model.species[0].shape.max_radius == Approx(0.55));
+
+  const double trap_area = 45.0 * 45.0 * std::sin(degrees_to_radians(120.0)) / 2.0;
+  CHECK(scenario.trap_area == Approx(trap_area).epsilon(1e-12));
+  REQUIRE(scenario.trap != nullptr);
+  CHECK(scenario.trap->area() == Approx(trap_area).epsilon(1e-12));
+  const double a = model.species[0].shape.projected_area;
+  const auto expected = static_cast<std::size_t>(std::llround(1.2 * trap_area / a));
+  CHECK(model.rods.size() == expected);
+  CHECK(scenario.species[0].count == static_cast<int>(expected));
+  CHECK(model.walls.size() == scenario.trap->walls().size());
+
+  const engine::MaterialTable& m = model.materials;
+  const int rod = m.index_of("rod");
+  CHECK(m.get(rod, rod).friction == 0.05);
+  CHECK(m.get(rod, rod).restitution == 0.3);
+  CHECK(m.get(rod, engine::MaterialTable::kBase).restitution == 0.1);
+  CHECK(m.get(rod, engine::MaterialTable::kLid).friction == 0.01);
+  CHECK(m.get(rod, engine::MaterialTable::kWall).restitution == 0.65);
+
+  CHECK(scenario.run.duration == 300.0);
+  CHECK(scenario.run.steps == 3000000);
+  CHECK(scenario.output.frame_interval == 0.07);
+  CHECK(scenario.output.frame_steps == 700);
+  CHECK(scenario.metrics.window == 0.07);
+}
+
+TEST_CASE("a mixture counted auto shares r A_t by number fraction", "[scenario]") {
+  const Scenario scenario = load_ok(
+      "trap: {angle: 70}\n"
+      "species:\n"
+      "  - {name: A, fraction: 0.4, noise: {kick_eps: 0, white_Dr: 0.1}}\n"
+      "  - {name: RnT, shape: {preset: RnT}, fraction: 0.6}\n");
+  const double a_A = scenario.model.species[0].shape.projected_area;
+  const double a_R = scenario.model.species[1].shape.projected_area;
+  const double total = 1.2 * scenario.trap_area / (0.4 * a_A + 0.6 * a_R);
+  CHECK(scenario.species[0].count == std::llround(0.4 * total));
+  CHECK(scenario.species[1].count == std::llround(0.6 * total));
+  CHECK(scenario.model.species[1].shape.length == Approx(3.5));
+  CHECK(scenario.model.species[0].noise.white_Dr == 0.1);
+  const double covered = scenario.species[0].count * a_A + scenario.species[1].count * a_R;
+  CHECK(covered == Approx(1.2 * scenario.trap_area).epsilon(0.01));
+}
+
+TEST_CASE("without a trap, count auto takes an area fraction", "[scenario]") {
+  const Scenario scenario = load_ok("trap: none\npopulation: {area_fraction: 0.1}\n");
+  CHECK(scenario.trap == nullptr);
+  CHECK(scenario.model.walls.empty());
+  const double a = scenario.model.species[0].shape.projected_area;
+  CHECK(static_cast<long>(scenario.model.rods.size()) == std::lround(0.1 * 86.85 * 86.85 / a));
+}
+
+TEST_CASE("--set overrides values before they are checked", "[scenario][override]") {
+  const std::string base = "name: base\ntrap: {angle: 120}\n";
+  SECTION("a value, a new section, and an item of the default species list") {
+    const Scenario scenario =
+        load_ok(base, {"trap.angle=70", "run.duration=5", "species[0].noise.kick_eps=0.02",
+                       "box.size=[100, 90]"});
+    CHECK(scenario.spec.trap->angle.value == 70.0);
+    CHECK(scenario.run.duration == 5.0);
+    CHECK(scenario.model.species[0].noise.kick_eps == 0.02);
+    CHECK(scenario.model.box_x == 100.0);
+    CHECK(scenario.model.box_y == 90.0);
+    CHECK(scenario.spec.trap->angle.where.source == "--set trap.angle=70");
+  }
+  SECTION("null restores the default; a section replaces `none`") {
+    const Scenario scenario = load_ok("trap: none\nspecies: [{count: 10}]\ndrive: {gap: 1.3}\n",
+                                      {"drive.gap=null", "trap.angle=100"});
+    CHECK(scenario.model.drive.gap == 1.2);
+    REQUIRE(scenario.trap != nullptr);
+    CHECK(scenario.trap->area() == Approx(0.5 * 45 * 45 * std::sin(degrees_to_radians(100))));
+  }
+  SECTION("errors name the option") {
+    const std::string errors = errors_of(base, {"trap.angle=190"});
+    CHECK_THAT(
+        errors,
+        Catch::Contains("--set trap.angle=190: trap.angle: must be in (0, 180) degrees, got 190"));
+  }
+  SECTION("an unknown key in an option gets a suggestion") {
+    const std::string errors = errors_of(base, {"trap.angel=100"});
+    CHECK_THAT(errors, Catch::Contains("--set trap.angel=100: trap.angel: unknown key \"angel\"; "
+                                       "did you mean \"angle\"?"));
+  }
+  SECTION("malformed options and paths") {
+    CHECK_THAT(errors_of(base, {"trap.angle"}), Catch::Contains("expected key.path=value"));
+    CHECK_THAT(errors_of(base, {"species[x].count=3"}), Catch::Contains("malformed key path"));
+    CHECK_THAT(errors_of(base, {"species[3].count=3"}),
+               Catch::Contains("species has 1 items; the index may be at most 1"));
+    CHECK_THAT(errors_of(base, {"run[0]=3"}), Catch::Contains("run is not a list"));
+  }
+}
+
+TEST_CASE("the resolved scenario reads back to the same model", "[scenario][resolved]") {
+  const std::string yaml =
+      "name: roundtrip\n"
+      "seed: 7\n"
+      "drive: {amplitude: 0.05}\n"
+      "trap: {angle: 75, direction: 30, wall_thickness: 0.7}\n"
+      "species:\n"
+      "  - {name: A, fraction: 0.5, noise: {white_Dr: 0.3}}\n"
+      "  - {name: B, shape: {taper: {length: 4, thick_radius: 0.5, thin_radius: 0.25}},\n"
+      "     material: steel, fraction: 0.5}\n"
+      "  - {name: C, shape: {spheres: [[0, 0.5], [0.6, 0.45], [1.2, 0.4], [1.8, 0.3]]},\n"
+      "     count: 3, initial: {region: inside_trap, heading: toward_apex}}\n"
+      "  - {name: D, shape: {preset: RnT, thin_radius: 0.25}, count: 4,\n"
+      "     initial: {region: outside_trap, heading: 45}}\n"
+      "materials:\n"
+      "  steel-wall: {restitution: 0.5}\n"
+      "  rod-steel: {friction: 0.2}\n"
+      "run: {duration: 2, dt: 5.0e-5}\n"
+      "output: {bullet_snapshots: [1, 0.5], frame_interval: 0.05}\n"
+      "metrics: {window: 0.1, stationary_threshold: 0.5}\n";
+  const Scenario first = load_ok(yaml);
+  const std::string resolved = resolved_yaml(first);
+  INFO(resolved);
+  const Scenario second = load_ok(resolved);
+  check_same_model(first.model, second.model);
+  CHECK(resolved_yaml(second) == resolved);
+  CHECK(second.name == "roundtrip");
+  CHECK(second.run.steps == first.run.steps);
+  CHECK(second.output.snapshot_steps == std::vector<std::int64_t>{10000, 20000});
+  CHECK(second.metrics.stationary_threshold == 0.5);
+  const int steel = second.model.materials.index_of("steel");
+  CHECK(second.model.materials.get(steel, engine::MaterialTable::kWall).restitution == 0.5);
+  CHECK(second.model.materials.get(steel, second.model.materials.index_of("rod")).friction == 0.2);
+  CHECK_THAT(resolved, Catch::Contains("derived:"));
+  CHECK_THAT(resolved, Catch::Contains("gamma:"));
+}
+
+TEST_CASE("the resolved paper scenario states the derived values", "[scenario][resolved]") {
+  const Scenario scenario = load_ok("trap: {angle: 120}\n");
+  const std::string resolved = resolved_yaml(scenario);
+  CHECK_THAT(resolved, Catch::Contains("count: " + std::to_string(scenario.model.rods.size())));
+  CHECK_THAT(resolved, Catch::Contains("amplitude: 0.0434"));
+  CHECK_THAT(resolved, Catch::Contains("trap_area: 876.8"));
+  CHECK_THAT(resolved, Catch::Contains("count: auto"));
+  check_same_model(scenario.model, load_ok(resolved).model);
+}
+
+TEST_CASE("intervals that are not a multiple of dt are warned about", "[scenario]") {
+  const LoadResult result =
+      load_scenario_text("trap: {angle: 120}\noutput: {frame_interval: 0.06996}\n", "w.yaml");
+  REQUIRE(result.ok());
+  REQUIRE(result.diagnostics.size() == 1);
+  CHECK(result.diagnostics[0].severity == Severity::warning);
+  CHECK_THAT(result.diagnostics[0].to_string(),
+             Catch::Contains("w.yaml:2:26: warning: output.frame_interval: 0.06996 s is not a "
+                             "multiple of run.dt = 1e-4 s; using 700 steps (0.07 s)"));
+  CHECK(result.scenario->output.frame_steps == 700);
+}
+
+TEST_CASE("a missing file is an error, not an exception", "[scenario]") {
+  const LoadResult result = load_scenario("no/such/file.yaml");
+  CHECK_FALSE(result.ok());
+  CHECK_THAT(format_diagnostics(result.diagnostics),
+             Catch::Contains("no/such/file.yaml: cannot open the file"));
+}
