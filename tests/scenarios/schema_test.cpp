@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "metrics/trapping.hpp"
 #include "scenarios/key_check.hpp"
 #include "scenarios/number_text.hpp"
 #include "scenarios/reference_doc.hpp"
@@ -91,4 +92,11 @@ TEST_CASE("docs/scenario-reference.md is generated from the schema", "[reference
       "docs/scenario-reference.md is stale; regenerate it with "
       "`cmake --build build --target scenario-reference`");
   CHECK(committed.str() == generated);
+}
+
+TEST_CASE("the metrics defaults are the metrics layer's", "[schema]") {
+  CHECK(parse_real(scenario_schema().at("metrics.window").default_value) ==
+        rodsort::metrics::kDefaultWindow);
+  CHECK(parse_real(scenario_schema().at("metrics.stationary_threshold").default_value) ==
+        rodsort::metrics::kDefaultStationarySpeed);
 }
