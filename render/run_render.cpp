@@ -5,18 +5,20 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
 
 #include "metrics/rods_csv.hpp"
 #include "render/external_program.hpp"
+#include "render/movie_encoder.hpp"
 
 namespace rodsort::render {
 namespace {
 
 constexpr const char* kRodsCsv = "rods.csv";
-constexpr const char* kMovieFramesDirectory = "movie-frames";
+constexpr const char* kMovieLog = "movie.log";
 constexpr const char* kMovieFile = "movie.mp4";
 
 std::string format_time(double time) {
@@ -88,21 +90,6 @@ class StillWriter {
   std::vector<long> drawn_;
 };
 
-void encode_movie(const std::filesystem::path& ffmpeg, const std::filesystem::path& frames,
-                  double fps, const std::filesystem::path& movie) {
-  char rate[32];
-  std::snprintf(rate, sizeof rate, "%.6g", fps);
-  const ProgramOutput encoded =
-      run_program({ffmpeg.string(), "-nostdin", "-y", "-loglevel", "error", "-framerate", rate,
-                   "-i", (frames / "%06d.png").string(), "-pix_fmt", "yuv420p", "-movflags",
-                   "+faststart", movie.string()});
-  if (encoded.exit_status != 0) {
-    throw std::runtime_error("ffmpeg failed (exit status " + std::to_string(encoded.exit_status) +
-                             ") making " + movie.string() + "; the frames are kept in " +
-                             frames.string() + ":\n" + last_lines(encoded.output, 10));
-  }
-}
-
 }  // namespace
 
 std::string still_name(double time) { return "frame-t" + format_time(time); }
@@ -141,12 +128,16 @@ RenderResult render_run(const RenderRequest& request, const Scene& scene,
               [](const Target& a, const Target& b) { return a.time < b.time; });
   }
 
-  const std::filesystem::path movie_frames = output / kMovieFramesDirectory;
+  using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+  SurfacePtr movie_surface(nullptr, &cairo_surface_destroy);
+  std::optional<MovieEncoder> encoder;
+  const std::filesystem::path movie = output / kMovieFile;
   if (request.movie) {
-    std::filesystem::remove_all(movie_frames);
-    make_directories(movie_frames);
+    movie_surface.reset(
+        cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height));
+    encoder.emplace(*ffmpeg, movie, layout.width, layout.height, request.movie_fps,
+                    output / kMovieLog);
   }
-  long movie_frame_count = 0;
 
   std::optional<MarkedFrame> previous;
   MarkedFrame current;
@@ -162,12 +153,13 @@ RenderResult render_run(const RenderRequest& request, const Scene& scene,
       stills.write(previous_nearer ? *previous : current);
       target.done = true;
     }
-    if (request.movie && current.index % request.movie_every == 0) {
-      char name[32];
-      std::snprintf(name, sizeof name, "%06ld.png", movie_frame_count++);
-      write_png(movie_frames / name, layout, scene, current.frame, current.marks);
-      if (progress != nullptr && movie_frame_count % 500 == 0) {
-        *progress << "render: " << movie_frame_count
+    if (encoder && current.index % request.movie_every == 0) {
+      cairo_t* cairo = cairo_create(movie_surface.get());
+      draw_top_view(cairo, layout, scene, current.frame, current.marks);
+      cairo_destroy(cairo);
+      encoder->add(movie_surface.get());
+      if (progress != nullptr && encoder->frames() % 500 == 0) {
+        *progress << "render: " << encoder->frames()
                   << " movie frames (t = " << format_time(current.frame.time) << " s)\n";
       }
     }
@@ -188,10 +180,8 @@ RenderResult render_run(const RenderRequest& request, const Scene& scene,
   }
   if (first_and_last) stills.write(*previous);
 
-  if (request.movie) {
-    const std::filesystem::path movie = output / kMovieFile;
-    encode_movie(*ffmpeg, movie_frames, request.movie_fps, movie);
-    std::filesystem::remove_all(movie_frames);
+  if (encoder) {
+    encoder->finish();
     result.written.push_back(movie);
   }
   return result;

@@ -4,9 +4,8 @@
 // metrics layer's observer, configured as the run's own, so that the stationary rods marked and
 // the eta written on a picture are those of the same frame's row in metrics.csv.
 //
-// Stills go to RUN_DIR/render/frame-t<time>.png (and .svg); a movie renders every n-th frame
-// into RUN_DIR/render/movie-frames/ and has ffmpeg encode them into RUN_DIR/render/movie.mp4
-// (H.264 where ffmpeg has it, yuv420p so that every player opens it), then removes the frames.
+// Stills go to RUN_DIR/render/frame-t<time>.png (and .svg); a movie streams every n-th frame to
+// ffmpeg, which writes RUN_DIR/render/movie.mp4 (render/movie_encoder.hpp).
 
 #include <filesystem>
 #include <iosfwd>

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/rod_outline.hpp"
+
 namespace rodsort::render {
 namespace {
 
@@ -38,13 +40,41 @@ double text_width(cairo_t* cairo, const std::string& text) {
   return extents.x_advance;
 }
 
-/// Largest distance from a rod's centre of mass to a point of its outline [mm].
-double reach(const engine::RodShape& shape) {
-  double reach = 0.0;
-  for (const engine::Sphere& sphere : shape.spheres) {
-    reach = std::max(reach, std::abs(sphere.axial) + sphere.radius);
+/// Width of the outline around a rod [px]: thin for a moving rod, bold for a stationary one.
+double edge_width(const ViewLayout& layout, bool stationary) {
+  return stationary ? std::max(1.0, 0.12 * layout.scale) : std::max(0.5, 0.05 * layout.scale);
+}
+
+/// The outline of `shape` with every disc grown by `grow` [mm].
+std::vector<OutlineLoop> grown_outline(engine::RodShape shape, double grow) {
+  for (engine::Sphere& sphere : shape.spheres) sphere.radius += grow;
+  return rod_outline(shape);
+}
+
+/// What drawing a species needs, worked out once per picture. A rod is drawn as two fills: its
+/// discs grown by the outline's width in the outline's colour, then its discs over them (filling
+/// twice costs a third of stroking the outline, and gives the same picture).
+struct SpeciesDrawing {
+  std::vector<OutlineLoop> body;
+  std::vector<OutlineLoop> moving_edge;
+  std::vector<OutlineLoop> stationary_edge;
+  double reach = 0.0;  ///< largest distance from the centre of mass to an edge [mm]
+};
+
+std::vector<SpeciesDrawing> species_drawings(const Scene& scene, const ViewLayout& layout) {
+  std::vector<SpeciesDrawing> drawings;
+  const double moving_edge = edge_width(layout, false) / layout.scale;
+  const double stationary_edge = edge_width(layout, true) / layout.scale;
+  for (const SpeciesLook& species : scene.species) {
+    SpeciesDrawing drawing{rod_outline(species.shape), grown_outline(species.shape, moving_edge),
+                           grown_outline(species.shape, stationary_edge), 0.0};
+    for (const engine::Sphere& sphere : species.shape.spheres) {
+      drawing.reach =
+          std::max(drawing.reach, std::abs(sphere.axial) + sphere.radius + stationary_edge);
+    }
+    drawings.push_back(std::move(drawing));
   }
-  return reach;
+  return drawings;
 }
 
 struct RodLook {
@@ -52,23 +82,38 @@ struct RodLook {
   bool stationary;
 };
 
-/// One rod, centre and in-plane axis in mm, at the layout's scale: first the discs' strokes, then
-/// their fills over them, so that only the outer half of each stroke stays, on the union's outline.
-void draw_rod(cairo_t* cairo, const ViewLayout& layout, const engine::RodShape& shape,
-              const Eigen::Vector2d& centre, const Eigen::Vector2d& axis, const RodLook& look) {
+/// Fills an outline placed at `centre` [mm] along the in-plane `axis`.
+void fill_outline(cairo_t* cairo, const ViewLayout& layout, const std::vector<OutlineLoop>& outline,
+                  const Eigen::Vector2d& centre, const Eigen::Vector2d& axis,
+                  const Colour& colour) {
+  // A rod tilted between the plates looks shorter from above: its discs' centres come closer
+  // along the axis (by cos(tilt) >= 0.99 between the paper's plates), their radii stay.
+  const double heading = std::atan2(axis.y(), axis.x());
   cairo_new_path(cairo);
-  for (const engine::Sphere& sphere : shape.spheres) {
-    const Eigen::Vector2d at = layout.to_pixels(centre + sphere.axial * axis);
+  for (const OutlineLoop& loop : outline) {
     cairo_new_sub_path(cairo);
-    cairo_arc(cairo, at.x(), at.y(), sphere.radius * layout.scale, 0.0, kTwoPi);
+    for (const OutlineArc& arc : loop) {
+      const Eigen::Vector2d at = layout.to_pixels(centre + arc.axial * axis);
+      // The image's y axis points down: angles change sign, and a clockwise loop in the cell runs
+      // with growing angles in the image.
+      cairo_arc(cairo, at.x(), at.y(), arc.radius * layout.scale, -(heading + arc.from),
+                -(heading + arc.to));
+    }
+    cairo_close_path(cairo);
   }
-  const double edge =
-      look.stationary ? std::max(1.0, 0.12 * layout.scale) : std::max(0.5, 0.05 * layout.scale);
-  cairo_set_line_width(cairo, 2.0 * edge);
-  set_colour(cairo, look.stationary ? kStationaryColour : edge_colour(look.fill));
-  cairo_stroke_preserve(cairo);
-  set_colour(cairo, look.fill);
+  set_colour(cairo, colour);
   cairo_fill(cairo);
+}
+
+/// One rod, centre and in-plane axis in mm.
+void draw_rod(cairo_t* cairo, const ViewLayout& layout, const SpeciesDrawing& drawing,
+              const Eigen::Vector2d& centre, const Eigen::Vector2d& axis, const RodLook& look) {
+  if (look.stationary) {
+    fill_outline(cairo, layout, drawing.stationary_edge, centre, axis, kStationaryColour);
+  } else {
+    fill_outline(cairo, layout, drawing.moving_edge, centre, axis, edge_colour(look.fill));
+  }
+  fill_outline(cairo, layout, drawing.body, centre, axis, look.fill);
   if (look.stationary) {
     const Eigen::Vector2d at = layout.to_pixels(centre);
     cairo_arc(cairo, at.x(), at.y(), std::max(1.2, 0.18 * layout.scale), 0.0, kTwoPi);
@@ -79,19 +124,17 @@ void draw_rod(cairo_t* cairo, const ViewLayout& layout, const engine::RodShape& 
 
 /// A rod and each of its periodic images that reaches into the cell (the caller clips to it).
 void draw_rod_with_images(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
-                          const engine::RodFrame& rod, const RodLook& look) {
-  const engine::RodShape& shape = scene.species[static_cast<std::size_t>(rod.species)].shape;
-  const double rod_reach = reach(shape);
-  // The axis projected on the plate: a rod tilted between the plates looks shorter from above.
+                          const SpeciesDrawing& drawing, const engine::RodFrame& rod,
+                          const RodLook& look) {
   const Eigen::Vector2d axis(rod.axis.x(), rod.axis.y());
   for (const int shift_x : {-1, 0, 1}) {
     for (const int shift_y : {-1, 0, 1}) {
       const Eigen::Vector2d centre =
           rod.position + Eigen::Vector2d(shift_x * scene.box_x, shift_y * scene.box_y);
       const bool reaches_cell =
-          centre.x() + rod_reach > 0.0 && centre.x() - rod_reach < scene.box_x &&
-          centre.y() + rod_reach > 0.0 && centre.y() - rod_reach < scene.box_y;
-      if (reaches_cell) draw_rod(cairo, layout, shape, centre, axis, look);
+          centre.x() + drawing.reach > 0.0 && centre.x() - drawing.reach < scene.box_x &&
+          centre.y() + drawing.reach > 0.0 && centre.y() - drawing.reach < scene.box_y;
+      if (reaches_cell) draw_rod(cairo, layout, drawing, centre, axis, look);
     }
   }
 }
@@ -247,12 +290,14 @@ void draw_top_view(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
   cairo_fill_preserve(cairo);
   cairo_clip(cairo);
   if (!scene.trap_area.empty()) draw_polygon(cairo, layout, scene.trap_area, kTrapAreaColour);
+  const std::vector<SpeciesDrawing> drawings = species_drawings(scene, layout);
   for (std::size_t r = 0; r < frame.rods.size(); ++r) {
     const engine::RodFrame& rod = frame.rods[r];
     assert(rod.species >= 0 && static_cast<std::size_t>(rod.species) < scene.species.size());
     const RodLook look{scene.species[static_cast<std::size_t>(rod.species)].colour,
                        !marks.stationary.empty() && marks.stationary[r]};
-    draw_rod_with_images(cairo, layout, scene, rod, look);
+    draw_rod_with_images(cairo, layout, scene, drawings[static_cast<std::size_t>(rod.species)], rod,
+                         look);
   }
   for (const engine::Wall& wall : scene.walls) draw_wall(cairo, layout, wall);
   cairo_restore(cairo);
@@ -279,7 +324,8 @@ void draw_top_view(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
     const Eigen::Vector2d centre_mm(
         (centre_x - layout.cell_left) / layout.scale,
         (layout.cell_top + layout.cell_height - middle_y) / layout.scale);
-    draw_rod(cairo, layout, shape, centre_mm, Eigen::Vector2d::UnitX(), entry.look);
+    draw_rod(cairo, layout, drawings[static_cast<std::size_t>(entry.species)], centre_mm,
+             Eigen::Vector2d::UnitX(), entry.look);
     set_colour(cairo, kTextColour);
     set_font(cairo, layout.font_size);
     cairo_move_to(cairo, entry.x + swatch + 0.5 * layout.font_size,
