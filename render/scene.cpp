@@ -28,6 +28,13 @@ Scene make_scene(const engine::Model& model, const trap::Obstacle* trap, std::st
   return scene;
 }
 
+Scene scenario_scene(const scenarios::Scenario& scenario) {
+  Scene scene = make_scene(scenario.model, scenario.trap.get(), scenario.name);
+  scene.stationary_rule =
+      stationary_rule_text(scenario.metrics.stationary_threshold, scenario.metrics.window);
+  return scene;
+}
+
 std::string stationary_rule_text(double threshold_mm_per_s, double window_s) {
   char text[96];
   std::snprintf(text, sizeof text, "speed < %g mm/s over %g s", threshold_mm_per_s, window_s);

@@ -10,6 +10,7 @@
 #include "engine/model.hpp"
 #include "engine/rod_shape.hpp"
 #include "render/palette.hpp"
+#include "scenarios/scenario.hpp"
 
 namespace rodsort::trap {
 class Obstacle;
@@ -38,6 +39,10 @@ struct Scene {
 /// The scene of a model: its cell, its species in the palette's order, its walls, and the trap's
 /// area when `trap` is a V-trap (other obstacles show their walls only). `trap` may be null.
 Scene make_scene(const engine::Model& model, const trap::Obstacle* trap, std::string title);
+
+/// The scene of a loaded scenario (a run directory's scenario.resolved.yaml): its model and trap,
+/// titled with its name, the legend stating its stationary threshold and window.
+Scene scenario_scene(const scenarios::Scenario& scenario);
 
 /// "speed < 1 mm/s over 0.07 s".
 std::string stationary_rule_text(double threshold_mm_per_s, double window_s);
