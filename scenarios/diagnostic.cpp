@@ -26,20 +26,11 @@ void Diagnostics::warning(const SourceLocation& where, std::string key_path, std
 
 void Diagnostics::add(Diagnostic diagnostic) { all_.push_back(std::move(diagnostic)); }
 
-void Diagnostics::append(const std::vector<Diagnostic>& others) {
-  all_.insert(all_.end(), others.begin(), others.end());
-}
-
 bool Diagnostics::has_errors() const { return error_count() > 0; }
 
 std::size_t Diagnostics::error_count() const {
   return static_cast<std::size_t>(std::count_if(
       all_.begin(), all_.end(), [](const Diagnostic& d) { return d.severity == Severity::error; }));
-}
-
-bool has_errors(const std::vector<Diagnostic>& diagnostics) {
-  return std::any_of(diagnostics.begin(), diagnostics.end(),
-                     [](const Diagnostic& d) { return d.severity == Severity::error; });
 }
 
 std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics) {

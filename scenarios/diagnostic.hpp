@@ -36,7 +36,6 @@ class Diagnostics {
   void error(const SourceLocation& where, std::string key_path, std::string message);
   void warning(const SourceLocation& where, std::string key_path, std::string message);
   void add(Diagnostic diagnostic);
-  void append(const std::vector<Diagnostic>& others);
 
   bool has_errors() const;
   std::size_t error_count() const;
@@ -48,6 +47,5 @@ class Diagnostics {
 
 /// One diagnostic per line, in the order found, and a last line counting the errors when any.
 std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics);
-bool has_errors(const std::vector<Diagnostic>& diagnostics);
 
 }  // namespace rodsort::scenarios

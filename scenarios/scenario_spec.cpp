@@ -116,8 +116,9 @@ void check_species(const std::vector<SpeciesSpec>& species, const SourceLocation
 }
 
 std::optional<TrapSpec> read_trap(const SectionReader& root, SectionReader trap) {
+  // `none`, and a value that is not a section (already reported), make no trap.
   const SourceNode* node = root.node("trap");
-  if (node == nullptr || (node->is_scalar() && node->scalar == "none")) return std::nullopt;
+  if (node == nullptr || !node->is_map()) return std::nullopt;
   TrapSpec out;
   out.where = trap.where();
   out.angle = trap.required_real("angle", "with a trap");
@@ -239,7 +240,6 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
     check_species(spec.species, spec.species_where, diagnostics);
   }
 
-  spec.trap_where = top.location_of("trap");
   spec.trap = read_trap(top, top.section("trap"));
   spec.materials = read_materials(top.section("materials"), material_names(spec), diagnostics);
 

@@ -84,7 +84,6 @@ struct ScenarioSpec {
   std::vector<SpeciesSpec> species;
   SourceLocation species_where;
   std::optional<TrapSpec> trap;  ///< absent for `trap: none`
-  SourceLocation trap_where;
   std::vector<MaterialPairSpec> materials;
 
   Sourced<double> duration;  ///< [s]

@@ -123,11 +123,7 @@ Sourced<double> SectionReader::real(std::string_view key) {
   const Found found = find(key);
   assert(found.node && "real() needs a value or a schema default");
   auto out = start<double>(key, found);
-  if (const auto value = to_real(*found.node, found.row, out.path, true)) {
-    out.value = *value;
-  } else {
-    out.valid = false;
-  }
+  if (const auto value = to_real(*found.node, found.row, out.path, true)) out.value = *value;
   return out;
 }
 
@@ -140,7 +136,6 @@ Sourced<double> SectionReader::required_real(std::string_view key, std::string_v
   if (has(key)) return real(key);
   const Found found = find(key);
   auto out = start<double>(key, found);
-  out.valid = false;
   diagnostics_.error(where_, out.path,
                      "missing; " + std::string(context) + " it is required (" +
                          expected_number(found.row, false) + ")");
@@ -157,12 +152,10 @@ Sourced<std::int64_t> SectionReader::integer(std::string_view key) {
   if (!value) {
     diagnostics_.error(node.where, out.path,
                        "expected " + expected_number(found.row, true) + ", got " + node.describe());
-    out.valid = false;
   } else if (!found.row.range.contains(static_cast<double>(*value))) {
     diagnostics_.error(node.where, out.path,
                        "must be " + with_unit(found.row.range.describe(), found.row.unit) +
                            ", got " + node.describe());
-    out.valid = false;
   } else {
     out.value = *value;
   }
@@ -181,16 +174,10 @@ Sourced<NumberOrKeyword> SectionReader::number_or_keyword(std::string_view key) 
     return out;
   }
   if (found.row.type == ValueType::integer) {
-    const Sourced<std::int64_t> whole = integer(key);
-    out.value.number = static_cast<double>(whole.value);
-    out.valid = whole.valid;
+    out.value.number = static_cast<double>(integer(key).value);
     return out;
   }
-  if (const auto value = to_real(node, found.row, out.path, true)) {
-    out.value.number = *value;
-  } else {
-    out.valid = false;
-  }
+  if (const auto value = to_real(node, found.row, out.path, true)) out.value.number = *value;
   return out;
 }
 
@@ -203,16 +190,10 @@ Sourced<std::string> SectionReader::text(std::string_view key) {
     diagnostics_.error(
         node.where, out.path,
         "expected a name of letters, digits, '.', '_' or '-', got " + node.describe());
-    out.valid = false;
     return out;
   }
   out.value = node.scalar;
   return out;
-}
-
-std::optional<Sourced<std::string>> SectionReader::optional_text(std::string_view key) {
-  if (!has(key)) return std::nullopt;
-  return text(key);
 }
 
 Sourced<std::string> SectionReader::choice(std::string_view key) {
@@ -230,7 +211,6 @@ Sourced<std::string> SectionReader::choice(std::string_view key) {
       }
     }
     diagnostics_.error(node.where, out.path, message);
-    out.valid = false;
     return out;
   }
   out.value = node.scalar;
@@ -244,7 +224,6 @@ Sourced<std::array<double, 2>> SectionReader::real_pair(std::string_view key) {
   const SourceNode& node = *found.node;
   if (node.is_scalar()) {
     const auto value = to_real(node, found.row, out.path, true);
-    out.valid = value.has_value();
     out.value = {value.value_or(0.0), value.value_or(0.0)};
     return out;
   }
@@ -253,12 +232,10 @@ Sourced<std::array<double, 2>> SectionReader::real_pair(std::string_view key) {
                        "expected [x, y] or one number" +
                            (found.row.unit.empty() ? "" : " in " + std::string(found.row.unit)) +
                            ", got " + node.describe());
-    out.valid = false;
     return out;
   }
   for (std::size_t i = 0; i < 2; ++i) {
     const auto value = to_real(node.items[i], found.row, out.path, true);
-    out.valid = out.valid && value.has_value();
     out.value[i] = value.value_or(0.0);
   }
   return out;
@@ -277,18 +254,15 @@ Sourced<std::vector<double>> SectionReader::real_list(std::string_view key) {
   const SourceNode& node = *found.node;
   if (node.is_scalar()) {
     const auto value = to_real(node, found.row, out.path, true);
-    out.valid = value.has_value();
     if (value) out.value.push_back(*value);
     return out;
   }
   if (!node.is_sequence()) {
     diagnostics_.error(node.where, out.path, "expected a list of numbers, got " + node.describe());
-    out.valid = false;
     return out;
   }
   for (const SourceNode& item : node.items) {
     const auto value = to_real(item, found.row, out.path, true);
-    out.valid = out.valid && value.has_value();
     if (value) out.value.push_back(*value);
   }
   return out;
@@ -303,7 +277,6 @@ std::optional<Sourced<std::vector<std::array<double, 2>>>> SectionReader::sphere
   const std::string expected = "expected a list of spheres [axial position, radius] in mm";
   if (!node.is_sequence() || node.items.empty()) {
     diagnostics_.error(node.where, out.path, expected + ", got " + node.describe());
-    out.valid = false;
     return out;
   }
   for (std::size_t i = 0; i < node.items.size(); ++i) {
@@ -311,7 +284,6 @@ std::optional<Sourced<std::vector<std::array<double, 2>>>> SectionReader::sphere
     const std::string item_path = out.path + "[" + std::to_string(i) + "]";
     if (!item.is_sequence() || item.items.size() != 2) {
       diagnostics_.error(item.where, item_path, expected + ", got " + item.describe());
-      out.valid = false;
       continue;
     }
     const auto axial = to_real(item.items[0], found.row, item_path, false);
@@ -319,14 +291,9 @@ std::optional<Sourced<std::vector<std::array<double, 2>>>> SectionReader::sphere
     if (radius && *radius <= 0.0) {
       diagnostics_.error(item.items[1].where, item_path,
                          "a sphere's radius must be > 0 mm, got " + item.items[1].describe());
-      out.valid = false;
       continue;
     }
-    if (!axial || !radius) {
-      out.valid = false;
-      continue;
-    }
-    out.value.push_back({*axial, *radius});
+    if (axial && radius) out.value.push_back({*axial, *radius});
   }
   return out;
 }

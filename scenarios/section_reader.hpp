@@ -55,7 +55,6 @@ class SectionReader {
   Sourced<std::int64_t> integer(std::string_view key);
   Sourced<NumberOrKeyword> number_or_keyword(std::string_view key);
   Sourced<std::string> text(std::string_view key);
-  std::optional<Sourced<std::string>> optional_text(std::string_view key);
   /// Absent without a default: an empty string, not given.
   Sourced<std::string> choice(std::string_view key);
   Sourced<std::array<double, 2>> real_pair(std::string_view key);
@@ -67,8 +66,6 @@ class SectionReader {
   SectionReader section(std::string_view key);
   /// The items of a list of sections; the schema's default list when absent.
   std::vector<SectionReader> list(std::string_view key);
-
-  Diagnostics& diagnostics() { return diagnostics_; }
 
  private:
   struct Found {

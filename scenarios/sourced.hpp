@@ -14,7 +14,6 @@ struct Sourced {
   SourceLocation where;  ///< of the value; of its section when the value is a default
   std::string path;      ///< concrete key path, e.g. "species[1].count"
   bool given = false;    ///< written by the user (file, --set or sweep), not a default
-  bool valid = true;     ///< false when rejected (then `value` is the default, or zero)
 };
 
 }  // namespace rodsort::scenarios
