@@ -98,6 +98,9 @@ Rod counts: `count: auto` is the paper's rule N = round(r A_t / a), with r =
 rod's projection on the plate. In a mixture the species counted `auto` share r A_t in proportion
 to their number `fraction`s. Without a trap, `count: auto` needs `population.area_fraction`.
 Initial rods are placed at random, without overlapping each other or the walls, from `seed`.
+
+Examples: `scenarios/quickstart.yaml`, and `scenarios/library/`, which holds the paper's system
+(`paper.yaml`) and one scenario or sweep per simulation figure of the paper.
 )";
 
 constexpr const char* kSweepIntroduction = R"(
