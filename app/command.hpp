@@ -13,4 +13,7 @@ struct Command {
   std::function<int()> action;  ///< returns the process's exit status (runner/exit_code.hpp)
 };
 
+Command add_run_command(CLI::App& app);
+Command add_validate_command(CLI::App& app);
+
 }  // namespace rodsort::app

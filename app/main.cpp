@@ -28,7 +28,10 @@ int main(int argc, char** argv) {
   app.footer(kExitCodes);
   app.set_version_flag("--version", runner::version());
   app.require_subcommand(1);
-  const std::vector<app::Command> commands = {};
+  const std::vector<app::Command> commands = {
+      app::add_run_command(app),
+      app::add_validate_command(app),
+  };
   for (const app::Command& command : commands) command.subcommand->footer(kExitCodes);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,356 @@
+#include "runner/run.hpp"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <csignal>
+#include <cstring>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "engine/simulation.hpp"
+#include "metrics/rods_csv.hpp"
+#include "runner/append_file.hpp"
+#include "runner/atomic_file.hpp"
+#include "runner/checkpoint.hpp"
+#include "runner/clocks.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/interrupt.hpp"
+#include "runner/lammps_dump.hpp"
+#include "runner/progress.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/run_record.hpp"
+#include "runner/version.hpp"
+
+namespace rodsort::runner {
+namespace {
+
+/// Progress is looked at every this many steps: often enough for a live line, rarely enough that
+/// reading the clocks costs nothing next to a step.
+constexpr std::int64_t kProgressEverySteps = 16;
+
+/// The time of the first line of a rods.csv chunk (its first field).
+double leading_time(std::string_view line) {
+  double time = 0.0;
+  std::from_chars(line.data(), line.data() + line.size(), time);
+  return time;
+}
+
+class RunSession {
+ public:
+  RunSession(const RunPlan& plan, std::filesystem::path directory, const RunOptions& options)
+      : plan_(plan),
+        directory_(std::move(directory)),
+        options_(options),
+        schedule_(plan.schedule),
+        simulation_(plan.model),
+        observer_(plan.metrics),
+        // The base's top surface moves within [-A, A] and the lid's bottom within w + [-A, A].
+        dump_(plan.model, -plan.model.drive.amplitude,
+              plan.model.drive.gap + plan.model.drive.amplitude) {}
+
+  int start() {
+    write_file_atomically(directory_ / kResolvedScenarioFile, plan_.resolved_yaml);
+    open_files();
+    rods_->append(std::string(metrics::kRodsCsvHeader) + "\n");
+    metrics_->append(observer_.csv_header() + "\n");
+    started_at_ = utc_now_iso8601();
+    begin_session(false);
+    log("rodsort: running %s (%zu rods, %g s simulated) into %s\n", plan_.name.c_str(),
+        plan_.model.rods.size(), plan_.duration_s, directory_.c_str());
+    handle_events(0);
+    write_checkpoint_now();
+    return loop();
+  }
+
+  int resume() {
+    const Checkpoint checkpoint = read_checkpoint(directory_ / kCheckpointFile);
+    open_files();
+    for (AppendFile* file : files()) {
+      const std::string name = file->path().filename().string();
+      const auto recorded = checkpoint.file_bytes.find(name);
+      if (recorded == checkpoint.file_bytes.end()) {
+        throw std::runtime_error("the checkpoint in " + directory_.string() +
+                                 " records no size for " + name);
+      }
+      file->truncate(recorded->second);
+    }
+    simulation_.restore(checkpoint.state);
+    prior_wall_s_ = checkpoint.wall_s;
+    prior_cpu_s_ = checkpoint.cpu_s;
+    sessions_ = checkpoint.sessions + 1;
+    started_at_ = checkpoint.started_at;
+    replay_metrics(checkpoint.metrics_replay_offset);
+    begin_session(true);
+    log("rodsort: resuming %s at t = %g s of %g s in %s\n", plan_.name.c_str(), simulation_.time(),
+        plan_.duration_s, directory_.c_str());
+    write_record(RunStatus::kRunning, "");
+    return loop();
+  }
+
+  /// Records a failure in run.json, if the directory can still be written.
+  void record_failure(const std::string& message) noexcept {
+    try {
+      write_record(RunStatus::kFailed, message);
+    } catch (...) {
+      // The original failure is the one to report.
+    }
+  }
+
+ private:
+  struct FrameOffset {
+    double time_s;
+    std::uint64_t offset;  ///< in rods.csv
+  };
+
+  void open_files() {
+    rods_ = std::make_unique<AppendFile>(directory_ / kRodsCsvFile);
+    metrics_ = std::make_unique<AppendFile>(directory_ / kMetricsCsvFile);
+    if (schedule_.trajectory_steps > 0) {
+      trajectory_ = std::make_unique<AppendFile>(directory_ / kTrajectoryFile);
+    }
+  }
+
+  std::vector<AppendFile*> files() const {
+    std::vector<AppendFile*> open = {rods_.get(), metrics_.get()};
+    if (trajectory_) open.push_back(trajectory_.get());
+    return open;
+  }
+
+  /// Starts the clocks of this process's part of the run. Resuming, the events of the
+  /// checkpoint's own step were handled before it was written.
+  void begin_session(bool resuming) {
+    session_wall0_s_ = wall_seconds();
+    session_cpu0_s_ = process_cpu_seconds();
+    session_start_sim_s_ = simulation_.time();
+    const std::int64_t step = simulation_.step_count();
+    next_snapshot_ = 0;
+    while (next_snapshot_ < schedule_.snapshots.size() &&
+           (schedule_.snapshots[next_snapshot_].step < step ||
+            (resuming && schedule_.snapshots[next_snapshot_].step == step))) {
+      ++next_snapshot_;
+    }
+  }
+
+  int loop() {
+    const InterruptGuard guard;
+    const bool terminal = options_.log != nullptr && isatty(fileno(options_.log));
+    std::optional<ProgressReporter> progress;
+    if (options_.show_progress && options_.log != nullptr) progress.emplace(options_.log, terminal);
+    while (simulation_.step_count() < schedule_.total_steps) {
+      if (const int signal_number = InterruptGuard::received(); signal_number != 0) {
+        return stop_on_signal(signal_number, progress);
+      }
+      simulation_.step();
+      const std::int64_t step = simulation_.step_count();
+      handle_events(step);
+      if (options_.after_step) options_.after_step(step);
+      if (progress && step % kProgressEverySteps == 0) progress->update(sample());
+    }
+    if (last_checkpoint_step_ != simulation_.step_count()) write_checkpoint_now();
+    write_record(RunStatus::kComplete, "");
+    if (progress) progress->finish(sample());
+    const double simulated_s = simulation_.time() - session_start_sim_s_;
+    log("rodsort: complete: %s in %s, %.3g CPU-s per simulated s\n", directory_.c_str(),
+        format_duration(total_wall_s()).c_str(),
+        simulated_s > 0.0 ? (process_cpu_seconds() - session_cpu0_s_) / simulated_s : 0.0);
+    return kExitOk;
+  }
+
+  int stop_on_signal(int signal_number, std::optional<ProgressReporter>& progress) {
+    write_checkpoint_now();
+    const std::string message = std::string("stopped by SIG") + sigabbrev_np(signal_number) +
+                                " at t = " + std::to_string(simulation_.time()) + " s";
+    write_record(RunStatus::kInterrupted, message);
+    if (progress) progress->finish(sample());
+    log("rodsort: %s; checkpoint written. Continue with: rodsort run --resume %s\n",
+        message.c_str(), directory_.c_str());
+    return kExitInterrupted;
+  }
+
+  void handle_events(std::int64_t step) {
+    const bool frame_due = schedule_.is_frame(step);
+    const bool trajectory_due = schedule_.is_trajectory(step);
+    if (frame_due || trajectory_due) {
+      const engine::Frame frame = simulation_.frame();
+      if (frame_due) write_frame(frame);
+      if (trajectory_due) trajectory_->append(dump_.format(frame, step));
+    }
+    while (next_snapshot_ < schedule_.snapshots.size() &&
+           schedule_.snapshots[next_snapshot_].step == step) {
+      simulation_.write_bullet_snapshot(
+          directory_ / snapshot_file_name(schedule_.snapshots[next_snapshot_].time_s));
+      ++next_snapshot_;
+    }
+    if (step > 0 && schedule_.is_checkpoint(step)) write_checkpoint_now();
+  }
+
+  void write_frame(const engine::Frame& frame) {
+    frame_text_.str("");
+    metrics::RodsCsvWriter writer(frame_text_, plan_.metrics.species_names);
+    writer.write(frame);
+    const std::string text = frame_text_.str();
+    const std::uint64_t offset = rods_->size();
+    rods_->append(text);
+    if (const auto row = observe_stored(text, offset)) {
+      metrics_->append(observer_.csv_line(*row) + "\n");
+    }
+  }
+
+  /// Feeds the observer one frame as rods.csv holds it, and remembers where the frame starts.
+  std::optional<metrics::MetricsRow> observe_stored(const std::string& frame_text,
+                                                    std::uint64_t offset) {
+    std::istringstream in(std::string(metrics::kRodsCsvHeader) + "\n" + frame_text);
+    metrics::RodsCsvReader reader(in, kRodsCsvFile, plan_.metrics.species_names);
+    engine::Frame stored;
+    if (!reader.next(stored)) {
+      throw std::runtime_error("cannot read back a frame of rods.csv: " + reader.error());
+    }
+    remember_frame(stored.time, offset);
+    return observer_.observe(stored);
+  }
+
+  void remember_frame(double time_s, std::uint64_t offset) {
+    recent_frames_.push_back({time_s, offset});
+    // Keep the latest frame at least one window and one frame older than the newest: a resumed
+    // observer fed the frames from there on has every frame it would have kept.
+    const double keep_after_s = time_s - plan_.metrics.window - plan_.frame_interval_s;
+    while (recent_frames_.size() >= 2 && recent_frames_[1].time_s <= keep_after_s) {
+      recent_frames_.pop_front();
+    }
+  }
+
+  /// Refills the metrics observer from rods.csv, from `offset` to the end, without writing rows
+  /// (metrics.csv already has them).
+  void replay_metrics(std::uint64_t offset) {
+    const std::string text = read_file(rods_->path());
+    if (offset > text.size()) {
+      throw std::runtime_error("the checkpoint points past the end of " + rods_->path().string());
+    }
+    std::size_t frame_start = offset;
+    double frame_time = 0.0;
+    for (std::size_t line_start = offset; line_start < text.size();) {
+      std::size_t line_end = text.find('\n', line_start);
+      line_end = line_end == std::string::npos ? text.size() : line_end + 1;
+      const double time = leading_time(std::string_view(text).substr(line_start));
+      if (line_start == frame_start) {
+        frame_time = time;
+      } else if (time != frame_time) {
+        observe_stored(text.substr(frame_start, line_start - frame_start), frame_start);
+        frame_start = line_start;
+        frame_time = time;
+      }
+      line_start = line_end;
+    }
+    if (frame_start < text.size()) {
+      observe_stored(text.substr(frame_start), frame_start);
+    }
+  }
+
+  void write_checkpoint_now() {
+    for (AppendFile* file : files()) file->sync();
+    Checkpoint checkpoint;
+    checkpoint.state = simulation_.state();
+    for (AppendFile* file : files()) {
+      checkpoint.file_bytes[file->path().filename().string()] = file->size();
+    }
+    checkpoint.wall_s = total_wall_s();
+    checkpoint.cpu_s = total_cpu_s();
+    checkpoint.sessions = sessions_;
+    checkpoint.started_at = started_at_;
+    checkpoint.metrics_replay_offset =
+        recent_frames_.empty() ? rods_->size() : recent_frames_.front().offset;
+    write_checkpoint(directory_ / kCheckpointFile, checkpoint);
+    last_checkpoint_step_ = simulation_.step_count();
+    write_record(RunStatus::kRunning, "");
+  }
+
+  void write_record(RunStatus status, const std::string& message) {
+    RunRecord record;
+    record.version = version();
+    record.name = plan_.name;
+    record.seed = plan_.model.seed;
+    record.status = status;
+    record.rods = static_cast<int>(plan_.model.rods.size());
+    record.dt_s = plan_.model.dt;
+    record.duration_s = plan_.duration_s;
+    record.steps = simulation_.step_count();
+    record.total_steps = schedule_.total_steps;
+    record.simulated_s = simulation_.time();
+    record.wall_s = total_wall_s();
+    record.cpu_s = total_cpu_s();
+    record.sessions = sessions_;
+    record.started_at = started_at_;
+    record.updated_at = utc_now_iso8601();
+    record.message = message;
+    write_run_record(directory_, record);
+  }
+
+  ProgressSample sample() const {
+    ProgressSample sample;
+    sample.simulated_s = simulation_.time();
+    sample.duration_s = plan_.duration_s;
+    sample.session_start_s = session_start_sim_s_;
+    sample.session_wall_s = wall_seconds() - session_wall0_s_;
+    sample.session_cpu_s = process_cpu_seconds() - session_cpu0_s_;
+    return sample;
+  }
+
+  double total_wall_s() const { return prior_wall_s_ + wall_seconds() - session_wall0_s_; }
+  double total_cpu_s() const { return prior_cpu_s_ + process_cpu_seconds() - session_cpu0_s_; }
+
+  template <typename... Args>
+  void log(const char* format, Args... args) const {
+    if (options_.log == nullptr) return;
+    std::fprintf(options_.log, format, args...);
+    std::fflush(options_.log);
+  }
+
+  const RunPlan& plan_;
+  std::filesystem::path directory_;
+  RunOptions options_;
+  RunSchedule schedule_;
+  engine::Simulation simulation_;
+  metrics::MetricsObserver observer_;
+  LammpsDumpFormatter dump_;
+  std::unique_ptr<AppendFile> rods_, metrics_, trajectory_;
+  std::ostringstream frame_text_;
+  std::deque<FrameOffset> recent_frames_;
+  std::size_t next_snapshot_ = 0;
+  std::int64_t last_checkpoint_step_ = -1;
+  double prior_wall_s_ = 0.0, prior_cpu_s_ = 0.0;  ///< spent by earlier sessions
+  double session_wall0_s_ = 0.0, session_cpu0_s_ = 0.0, session_start_sim_s_ = 0.0;
+  int sessions_ = 1;
+  std::string started_at_;
+};
+
+template <typename Body>
+int guarded(RunSession& session, Body body) {
+  try {
+    return body();
+  } catch (const std::exception& error) {
+    session.record_failure(error.what());
+    throw;
+  }
+}
+
+}  // namespace
+
+int start_run(const RunPlan& plan, const std::filesystem::path& directory,
+              const RunOptions& options) {
+  std::filesystem::create_directories(directory);
+  RunSession session(plan, directory, options);
+  return guarded(session, [&] { return session.start(); });
+}
+
+int continue_run(const RunPlan& plan, const std::filesystem::path& directory,
+                 const RunOptions& options) {
+  RunSession session(plan, directory, options);
+  return guarded(session, [&] { return session.resume(); });
+}
+
+}  // namespace rodsort::runner

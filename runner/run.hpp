@@ -1,0 +1,46 @@
+#pragma once
+// The run loop: steps a Simulation built from a RunPlan and writes the run directory (DESIGN §4,
+// docs/cli.md), checkpointing periodically and when SIGINT or SIGTERM arrives.
+//
+// Consistency after any stop. The growing files (rods.csv, metrics.csv, trajectory.dump) get one
+// whole frame per write, so a run killed at any moment leaves whole lines. A checkpoint records
+// the engine State and every file's size at that instant; resuming restores the State and cuts the
+// files back to those sizes, so frames written after the checkpoint by a run that was then killed
+// are written again, once. The metrics observer, which remembers the frames of the last window
+// tau, is refilled by reading back the end of rods.csv.
+//
+// The live run feeds the metrics observer the frames as rods.csv stores them (9 significant
+// digits), not the engine's full-precision ones, so that metrics.csv is the same whether it comes
+// from a run, from a resumed run, or from `rodsort analyze` afterwards.
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+
+#include "runner/run_plan.hpp"
+
+namespace rodsort::runner {
+
+struct RunOptions {
+  /// Where progress and messages go (nullptr: nowhere). A terminal gets a live line.
+  std::FILE* log = stderr;
+  bool show_progress = true;
+  /// Called after every step once that step's outputs are written; tests use it to raise a signal
+  /// or throw at a chosen step.
+  std::function<void(std::int64_t step)> after_step;
+};
+
+/// Runs `plan` from the start into `directory`, which must not hold a run (the caller checks and
+/// clears it). Returns kExitOk, kExitInterrupted (checkpoint written), or throws on failure after
+/// recording it in run.json.
+int start_run(const RunPlan& plan, const std::filesystem::path& directory,
+              const RunOptions& options = {});
+
+/// Continues the run in `directory` from its checkpoint. `plan` must be the one compiled from the
+/// directory's scenario.resolved.yaml.
+int continue_run(const RunPlan& plan, const std::filesystem::path& directory,
+                 const RunOptions& options = {});
+
+}  // namespace rodsort::runner

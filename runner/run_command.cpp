@@ -1,0 +1,95 @@
+#include "runner/run_command.hpp"
+
+#include <ostream>
+
+#include "runner/exit_code.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/run_plan.hpp"
+#include "runner/run_record.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace rodsort::runner {
+namespace {
+
+/// What a directory holding a run holds, for the message that refuses to overwrite it.
+std::string describe_existing_run(const std::filesystem::path& directory) {
+  try {
+    if (const auto record = read_run_record(directory)) {
+      return "a run of '" + record->name + "' (" + to_string(record->status) +
+             " at t = " + std::to_string(record->simulated_s) + " s of " +
+             std::to_string(record->duration_s) + " s)";
+    }
+  } catch (const std::exception&) {
+    // An unreadable run.json still means the directory is taken.
+  }
+  return "the files of a run";
+}
+
+}  // namespace
+
+std::filesystem::path default_run_directory(const std::string& name) {
+  return std::filesystem::path("runs") / name;
+}
+
+int run_scenario_file(const RunRequest& request, std::ostream& err) {
+  const scenarios::LoadResult loaded =
+      scenarios::load_scenario_with_options(request.scenario, request.set_options);
+  err << scenarios::format_diagnostics(loaded.diagnostics);
+  if (!loaded.ok()) {
+    err << "rodsort: " << request.scenario.string() << " refused; nothing was written\n";
+    return kExitUsage;
+  }
+  const scenarios::Scenario& scenario = *loaded.scenario;
+  const std::filesystem::path directory =
+      request.output.empty() ? default_run_directory(scenario.name) : request.output;
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory)) {
+    err << "rodsort: " << directory.string() << " exists and is not a directory\n";
+    return kExitUsage;
+  }
+  if (holds_run(directory)) {
+    if (!request.force) {
+      err << "rodsort: " << directory.string() << " already holds "
+          << describe_existing_run(directory) << ".\n  Continue it with `rodsort run --resume "
+          << directory.string() << "`, or start over with --force (its run files are replaced).\n";
+      return kExitUsage;
+    }
+    clear_run(directory);
+  }
+  const RunPlan plan = make_run_plan(scenario);
+  return start_run(plan, directory, request.options);
+}
+
+int resume_run_directory(const std::filesystem::path& directory, const RunOptions& options,
+                         std::ostream& err) {
+  const auto record = read_run_record(directory);
+  if (!record || !std::filesystem::exists(directory / kCheckpointFile)) {
+    err << "rodsort: " << directory.string()
+        << " holds no run to resume (no run.json and checkpoint.bin)\n";
+    return kExitUsage;
+  }
+  if (record->status == RunStatus::kComplete) {
+    err << "rodsort: " << directory.string() << " is already complete (t = " << record->simulated_s
+        << " s); nothing to do\n";
+    return kExitOk;
+  }
+  const std::filesystem::path resolved = directory / kResolvedScenarioFile;
+  const scenarios::LoadResult loaded = scenarios::load_scenario(resolved);
+  err << scenarios::format_diagnostics(loaded.diagnostics);
+  if (!loaded.ok()) {
+    err << "rodsort: cannot resume: " << resolved.string() << " no longer loads\n";
+    return kExitFailure;
+  }
+  return continue_run(make_run_plan(*loaded.scenario), directory, options);
+}
+
+int validate_scenario_file(const std::filesystem::path& scenario,
+                           const std::vector<std::string>& set_options, std::ostream& out,
+                           std::ostream& err) {
+  const scenarios::LoadResult loaded = scenarios::load_scenario_with_options(scenario, set_options);
+  err << scenarios::format_diagnostics(loaded.diagnostics);
+  if (!loaded.ok()) return kExitUsage;
+  out << scenarios::resolved_yaml(*loaded.scenario);
+  return kExitOk;
+}
+
+}  // namespace rodsort::runner

@@ -1,0 +1,44 @@
+#include "runner/run_plan.hpp"
+
+#include <memory>
+
+#include "trap/obstacle.hpp"
+
+namespace rodsort::runner {
+
+metrics::MetricsConfig metrics_config(const scenarios::Scenario& scenario) {
+  metrics::MetricsConfig config;
+  for (std::size_t s = 0; s < scenario.model.species.size(); ++s) {
+    config.species_names.push_back(scenario.model.species[s].name);
+    config.species_area.push_back(scenario.species[s].projected_area);
+  }
+  config.trap_area = scenario.trap_area;
+  if (scenario.trap) {
+    std::shared_ptr<const trap::Obstacle> trap = scenario.trap;
+    config.inside = [trap](const Eigen::Vector2d& point) { return trap->contains(point); };
+  }
+  config.window = scenario.metrics.window;
+  config.stationary_speed_threshold = scenario.metrics.stationary_threshold;
+  return config;
+}
+
+RunPlan make_run_plan(const scenarios::Scenario& scenario) {
+  RunPlan plan;
+  plan.name = scenario.name;
+  plan.model = scenario.model;
+  plan.duration_s = scenario.run.duration;
+  plan.frame_interval_s = scenario.output.frame_interval;
+  plan.schedule.total_steps = scenario.run.steps;
+  plan.schedule.frame_steps = scenario.output.frame_steps;
+  plan.schedule.trajectory_steps = scenario.output.trajectory_steps;
+  plan.schedule.checkpoint_steps = scenario.output.checkpoint_steps;
+  for (std::size_t i = 0; i < scenario.output.snapshot_steps.size(); ++i) {
+    plan.schedule.snapshots.push_back(
+        {scenario.output.snapshot_steps[i], scenario.output.bullet_snapshots[i]});
+  }
+  plan.metrics = metrics_config(scenario);
+  plan.resolved_yaml = scenarios::resolved_yaml(scenario);
+  return plan;
+}
+
+}  // namespace rodsort::runner

@@ -1,0 +1,258 @@
+#include "runner/run.hpp"
+
+#include <catch2/catch.hpp>
+#include <csignal>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "metrics/rods_csv.hpp"
+#include "runner/atomic_file.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/run_command.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/run_record.hpp"
+#include "scenarios/scenario.hpp"
+#include "temp_directory.hpp"
+
+using namespace rodsort::runner;
+using rodsort::runner::testing::TempDirectory;
+
+namespace {
+
+// tiny.yaml: 4 rods, 0.35 s at dt = 1e-4 (3500 steps); frames every 350 steps, trajectory every
+// 700, checkpoints every 1050, a .bullet snapshot at 0.07 s.
+const std::string kTiny = RODSORT_SOURCE_DIR "/tests/runner/data/tiny.yaml";
+constexpr int kRods = 4;
+constexpr int kFrames = 11;
+constexpr int kTrajectoryFrames = 6;
+constexpr int kSpheresPerRod = 12;
+
+RunOptions silent() {
+  RunOptions options;
+  options.log = nullptr;
+  return options;
+}
+
+int run_tiny(const std::filesystem::path& directory, RunOptions options = silent(),
+             std::vector<std::string> set_options = {}) {
+  RunRequest request;
+  request.scenario = kTiny;
+  request.set_options = std::move(set_options);
+  request.output = directory;
+  request.options = std::move(options);
+  std::ostringstream err;
+  const int status = run_scenario_file(request, err);
+  INFO(err.str());
+  return status;
+}
+
+std::vector<std::string> lines_of(const std::filesystem::path& path) {
+  std::vector<std::string> lines;
+  std::istringstream in(read_file(path));
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::size_t count_of(const std::vector<std::string>& lines, const std::string& text) {
+  std::size_t count = 0;
+  for (const std::string& line : lines) count += line == text;
+  return count;
+}
+
+/// The outputs that must come out identical from the same scenario and seed.
+void check_same_outputs(const std::filesystem::path& a, const std::filesystem::path& b) {
+  for (const char* file : {kRodsCsvFile, kMetricsCsvFile, kTrajectoryFile}) {
+    INFO(file);
+    CHECK(read_file(a / file) == read_file(b / file));
+  }
+}
+
+/// A resumed run against the same run uninterrupted: the same frames, rods and files, and the same
+/// motion. engine::Simulation::restore() does not yet carry Bullet's warm-start impulses of
+/// persisting rod-plate contacts, so a run resumed while a rod rests on a plate drifts from the
+/// uninterrupted one by ~1e-10 mm over a thousand steps; the motion is compared to 1e-6.
+void check_resumed_outputs(const std::filesystem::path& whole,
+                           const std::filesystem::path& resumed) {
+  const auto a = rodsort::metrics::read_rods_csv(whole / kRodsCsvFile);
+  const auto b = rodsort::metrics::read_rods_csv(resumed / kRodsCsvFile);
+  REQUIRE(a.error.empty());
+  REQUIRE(b.error.empty());
+  CHECK(b.warning.empty());
+  REQUIRE(a.frames.size() == b.frames.size());
+  for (std::size_t f = 0; f < a.frames.size(); ++f) {
+    CHECK(a.frames[f].time == b.frames[f].time);
+    REQUIRE(a.frames[f].rods.size() == b.frames[f].rods.size());
+    for (std::size_t r = 0; r < a.frames[f].rods.size(); ++r) {
+      const auto& ra = a.frames[f].rods[r];
+      const auto& rb = b.frames[f].rods[r];
+      CHECK(ra.species == rb.species);
+      CHECK((ra.unwrapped - rb.unwrapped).norm() < 1e-6);
+      CHECK((ra.axis - rb.axis).norm() < 1e-6);
+      CHECK((ra.velocity - rb.velocity).norm() < 1e-4);
+    }
+  }
+  CHECK(lines_of(whole / kMetricsCsvFile).size() == lines_of(resumed / kMetricsCsvFile).size());
+  CHECK(lines_of(whole / kTrajectoryFile).size() == lines_of(resumed / kTrajectoryFile).size());
+}
+
+}  // namespace
+
+TEST_CASE("a run writes every file of the run directory", "[runner][run]") {
+  TempDirectory directory;
+  const auto run = directory / "tiny";
+  REQUIRE(run_tiny(run) == kExitOk);
+
+  const auto rods = lines_of(run / kRodsCsvFile);
+  REQUIRE(rods.size() == 1 + kFrames * kRods);
+  CHECK(rods[0] == "t,rod,species,x,y,xu,yu,z,ux,uy,uz,vx,vy,vz,wz");
+  const rodsort::metrics::RodsCsv read = rodsort::metrics::read_rods_csv(run / kRodsCsvFile);
+  REQUIRE(read.error.empty());
+  CHECK(read.warning.empty());
+  REQUIRE(read.frames.size() == kFrames);
+  CHECK(read.frames.back().time == Approx(0.35).margin(1e-9));
+
+  const auto metrics = lines_of(run / kMetricsCsvFile);
+  CHECK_THAT(metrics[0], Catch::StartsWith("t,eta,eta_trap,"));
+  CHECK_THAT(metrics[0], Catch::Contains(",n_stationary,n_trap,"));
+  CHECK_THAT(metrics[0], Catch::Contains(",eta_A,"));
+  CHECK(metrics.size() == kFrames - 1);  // the first frame has no frame tau earlier
+
+  const auto dump = lines_of(run / kTrajectoryFile);
+  CHECK(count_of(dump, "ITEM: TIMESTEP") == kTrajectoryFrames);
+  CHECK(count_of(dump, "ITEM: BOX BOUNDS pp pp ff") == kTrajectoryFrames);
+  CHECK(count_of(dump, "ITEM: ATOMS id mol type x y z radius") == kTrajectoryFrames);
+  CHECK(dump.size() == kTrajectoryFrames * (9 + kRods * kSpheresPerRod));
+  CHECK(dump[3] == std::to_string(kRods * kSpheresPerRod));
+
+  CHECK(std::filesystem::exists(run / snapshot_file_name(0.07)));
+  CHECK(std::filesystem::exists(run / kCheckpointFile));
+
+  const auto record = read_run_record(run);
+  REQUIRE(record.has_value());
+  CHECK(record->status == RunStatus::kComplete);
+  CHECK(record->name == "tiny");
+  CHECK(record->seed == 7);
+  CHECK(record->rods == kRods);
+  CHECK(record->steps == 3500);
+  CHECK(record->total_steps == 3500);
+  CHECK(record->simulated_s == Approx(0.35));
+  CHECK(record->cpu_s > 0.0);
+  CHECK(record->cpu_per_simulated_second() > 0.0);
+
+  // The resolved scenario loads back as the same scenario.
+  const auto reloaded = rodsort::scenarios::load_scenario(run / kResolvedScenarioFile);
+  INFO(rodsort::scenarios::format_diagnostics(reloaded.diagnostics));
+  REQUIRE(reloaded.ok());
+  CHECK(reloaded.scenario->model.rods.size() == kRods);
+}
+
+TEST_CASE("the same scenario and seed give identical output files", "[runner][run]") {
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "first") == kExitOk);
+  REQUIRE(run_tiny(directory / "second") == kExitOk);
+  check_same_outputs(directory / "first", directory / "second");
+  REQUIRE(run_tiny(directory / "other-seed", silent(), {"seed=8"}) == kExitOk);
+  CHECK(read_file(directory / "first" / kRodsCsvFile) !=
+        read_file(directory / "other-seed" / kRodsCsvFile));
+}
+
+TEST_CASE("a run stopped by SIGINT resumes to the same files", "[runner][run][resume]") {
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "whole") == kExitOk);
+
+  const auto stopped = directory / "stopped";
+  RunOptions interrupt = silent();
+  interrupt.after_step = [](std::int64_t step) {
+    if (step == 1234) std::raise(SIGINT);
+  };
+  REQUIRE(run_tiny(stopped, interrupt) == kExitInterrupted);
+  const auto record = read_run_record(stopped);
+  REQUIRE(record.has_value());
+  CHECK(record->status == RunStatus::kInterrupted);
+  CHECK(record->steps == 1234);  // the signal is acted on before the next step
+  CHECK_THAT(record->message, Catch::Contains("SIGINT"));
+
+  std::ostringstream err;
+  REQUIRE(resume_run_directory(stopped, silent(), err) == kExitOk);
+  check_resumed_outputs(directory / "whole", stopped);
+  const auto resumed = read_run_record(stopped);
+  CHECK(resumed->status == RunStatus::kComplete);
+  CHECK(resumed->sessions == 2);
+  CHECK(resumed->steps == 3500);
+}
+
+TEST_CASE("a run that died after its checkpoint is cut back and resumed", "[runner][run][resume]") {
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "whole") == kExitOk);
+
+  // Dies at step 2000: the last checkpoint is at step 1050, but frames up to step 1750 are written.
+  const auto crashed = directory / "crashed";
+  RunOptions crash = silent();
+  crash.after_step = [](std::int64_t step) {
+    if (step == 2000) throw std::runtime_error("simulated crash");
+  };
+  CHECK_THROWS_WITH(run_tiny(crashed, crash), "simulated crash");
+  const auto record = read_run_record(crashed);
+  REQUIRE(record.has_value());
+  CHECK(record->status == RunStatus::kFailed);
+  CHECK(record->message == "simulated crash");
+  CHECK(lines_of(crashed / kRodsCsvFile).size() == 1 + 6 * kRods);
+
+  std::ostringstream err;
+  REQUIRE(resume_run_directory(crashed, silent(), err) == kExitOk);
+  check_resumed_outputs(directory / "whole", crashed);
+}
+
+TEST_CASE("a refused scenario writes nothing", "[runner][run]") {
+  TempDirectory directory;
+  const auto run = directory / "refused";
+  RunRequest request;
+  request.scenario = kTiny;
+  request.set_options = {"trap.angle=190"};
+  request.output = run;
+  request.options = silent();
+  std::ostringstream err;
+  CHECK(run_scenario_file(request, err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("trap.angle"));
+  CHECK_THAT(err.str(), Catch::Contains("nothing was written"));
+  CHECK_FALSE(std::filesystem::exists(run));
+}
+
+TEST_CASE("a directory that holds a run is kept unless forced", "[runner][run]") {
+  TempDirectory directory;
+  const auto run = directory / "tiny";
+  REQUIRE(run_tiny(run) == kExitOk);
+  const std::string before = read_file(run / kRodsCsvFile);
+
+  RunRequest request;
+  request.scenario = kTiny;
+  request.set_options = {"seed=8"};
+  request.output = run;
+  request.options = silent();
+  std::ostringstream err;
+  CHECK(run_scenario_file(request, err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("already holds a run of 'tiny' (complete"));
+  CHECK_THAT(err.str(), Catch::Contains("--resume"));
+  CHECK_THAT(err.str(), Catch::Contains("--force"));
+  CHECK(read_file(run / kRodsCsvFile) == before);
+
+  request.force = true;
+  CHECK(run_scenario_file(request, err) == kExitOk);
+  CHECK(read_file(run / kRodsCsvFile) != before);
+  CHECK(read_run_record(run)->seed == 8);
+}
+
+TEST_CASE("resuming a complete run changes nothing", "[runner][run][resume]") {
+  TempDirectory directory;
+  const auto run = directory / "tiny";
+  REQUIRE(run_tiny(run) == kExitOk);
+  const std::string before = read_file(run / kRodsCsvFile);
+  std::ostringstream err;
+  CHECK(resume_run_directory(run, silent(), err) == kExitOk);
+  CHECK_THAT(err.str(), Catch::Contains("already complete"));
+  CHECK(read_file(run / kRodsCsvFile) == before);
+  CHECK(resume_run_directory(directory / "nothing", silent(), err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("holds no run to resume"));
+}
