@@ -15,5 +15,8 @@ struct Command {
 
 Command add_run_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
+Command add_analyze_command(CLI::App& app);
+Command add_summarize_command(CLI::App& app);
 
 }  // namespace rodsort::app

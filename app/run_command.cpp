@@ -15,11 +15,9 @@ Command add_run_command(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* run = app.add_subcommand(
-      "run",
-      "Run a scenario into a run directory (rods.csv, metrics.csv, trajectory.dump, run.json, "
-      "checkpoints), or continue a stopped run with --resume DIR.");
+      "run", "Run a scenario into a run directory, or continue a stopped run (--resume DIR)");
   CLI::Option* scenario =
-      run->add_option("scenario", options->request.scenario, "Scenario file (YAML)")
+      run->add_option("SCENARIO", options->request.scenario, "Scenario file (YAML)")
           ->check(CLI::ExistingFile);
   CLI::Option* output = run->add_option("-o,--output", options->request.output,
                                         "Run directory (default: runs/<scenario name>)");

@@ -13,10 +13,8 @@ Command add_validate_command(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* validate = app.add_subcommand(
-      "validate",
-      "Check a scenario and print it resolved (every default explicit, derived values listed); "
-      "errors go to stderr.");
-  validate->add_option("scenario", options->scenario, "Scenario file (YAML)")
+      "validate", "Check a scenario; print it resolved (every default explicit), or its errors");
+  validate->add_option("SCENARIO", options->scenario, "Scenario file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
   validate->add_option("--set", options->set_options,

@@ -1,0 +1,26 @@
+#include <iostream>
+#include <memory>
+
+#include "app/command.hpp"
+#include "runner/sweep.hpp"
+
+namespace rodsort::app {
+
+Command add_sweep_command(CLI::App& app) {
+  auto request = std::make_shared<runner::SweepRequest>();
+  CLI::App* sweep = app.add_subcommand(
+      "sweep",
+      "Run a sweep's points as parallel processes and write sweep.csv; run it again to "
+      "continue a stopped sweep");
+  sweep->add_option("SWEEP", request->sweep_file, "Sweep file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  sweep->add_option("-o,--output", request->output, "Sweep directory (default: runs/<sweep name>)");
+  sweep->add_option("-j,--jobs", request->jobs, "Points run at once (default: one per core)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_flag("--force", request->force,
+                  "Rerun points whose run directory holds a different scenario");
+  return {sweep, [request] { return runner::run_sweep(*request, std::cerr); }};
+}
+
+}  // namespace rodsort::app

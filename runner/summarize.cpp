@@ -1,0 +1,183 @@
+#include "runner/summarize.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "metrics/critical_angle.hpp"
+#include "runner/atomic_file.hpp"
+#include "runner/csv_table.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/json_text.hpp"
+#include "runner/sweep.hpp"
+
+namespace rodsort::runner {
+namespace {
+
+constexpr const char* kAngleKey = "trap.angle";
+constexpr const char* kSeedKey = "seed";
+
+std::optional<double> parse_number(const std::string& text) {
+  double value = 0.0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+/// A number for the table: 3 significant digits, "-" when undefined.
+std::string short_number(const std::string& text) {
+  const auto value = parse_number(text);
+  if (!value || !std::isfinite(*value)) return "-";
+  char formatted[32];
+  std::snprintf(formatted, sizeof formatted, "%.3g", *value);
+  return formatted;
+}
+
+/// Prints rows as columns padded to their widest cell.
+void print_aligned(std::ostream& out, const std::vector<std::vector<std::string>>& rows) {
+  std::vector<std::size_t> widths;
+  for (const auto& row : rows) {
+    widths.resize(std::max(widths.size(), row.size()), 0);
+    for (std::size_t c = 0; c < row.size(); ++c) widths[c] = std::max(widths[c], row[c].size());
+  }
+  for (const auto& row : rows) {
+    std::string line;
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      line += row[c];
+      if (c + 1 < row.size()) line += std::string(widths[c] - row[c].size() + 2, ' ');
+    }
+    out << line << '\n';
+  }
+}
+
+/// The label of a group of points that share every swept value but the angle and the seed.
+std::string group_label(const std::vector<std::string>& keys,
+                        const std::vector<std::string>& values) {
+  std::string label;
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    if (!label.empty()) label += ", ";
+    label += keys[k] + "=" + values[k];
+  }
+  return label.empty() ? "all points" : label;
+}
+
+void report_critical_angles(const std::filesystem::path& sweep_directory, const CsvTable& table,
+                            const std::vector<std::string>& keys, std::ostream& out) {
+  const std::size_t angle_column = *table.column(kAngleKey);
+  const std::size_t status_column = *table.column(kSweepStatusColumn);
+  const auto eta_column = table.column("eta_mean");
+  std::vector<std::string> group_keys;
+  std::vector<std::size_t> group_columns;
+  for (const std::string& key : keys) {
+    if (key == kAngleKey || key == kSeedKey) continue;
+    group_keys.push_back(key);
+    group_columns.push_back(*table.column(key));
+  }
+  // group values -> angle -> eta of each complete point (seeds)
+  std::map<std::vector<std::string>, std::map<double, std::vector<double>>> groups;
+  for (const auto& row : table.rows) {
+    std::vector<std::string> group;
+    for (const std::size_t column : group_columns) group.push_back(row[column]);
+    auto& angles = groups[group];
+    const auto angle = parse_number(row[angle_column]);
+    const auto eta = eta_column ? parse_number(row[*eta_column]) : std::nullopt;
+    if (row[status_column] != "complete" || !angle || !eta || !std::isfinite(*eta)) continue;
+    angles[*angle].push_back(*eta);
+  }
+
+  CsvTable result;
+  result.header = group_keys;
+  for (const char* column :
+       {"theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note"}) {
+    result.header.push_back(column);
+  }
+  out << "\ntheta_c: the angle where eta (mean over seeds) falls through half its low-angle "
+         "plateau\n";
+  for (const auto& [group, angles] : groups) {
+    std::vector<metrics::SweepPoint> points;
+    for (const auto& [angle, etas] : angles) {
+      double sum = 0.0;
+      for (const double eta : etas) sum += eta;
+      points.push_back({angle, sum / static_cast<double>(etas.size())});
+    }
+    const metrics::CriticalAngle critical = metrics::critical_angle(points);
+    std::vector<std::string> row = group;
+    char line[256];
+    if (critical.found) {
+      std::snprintf(line, sizeof line,
+                    "  %s: theta_c = %.4g deg (between %.4g and %.4g; plateau eta %.3g)",
+                    group_label(group_keys, group).c_str(), critical.angle, critical.below,
+                    critical.above, critical.plateau);
+      for (const double value :
+           {critical.angle, critical.below, critical.above, critical.plateau}) {
+        row.push_back(std::isnan(value) ? "nan" : json_number(value));
+      }
+      row.push_back(std::to_string(points.size()));
+      row.push_back("");
+    } else {
+      std::snprintf(line, sizeof line, "  %s: not found (%s)",
+                    group_label(group_keys, group).c_str(), critical.reason.c_str());
+      for (int i = 0; i < 4; ++i) row.push_back("nan");
+      row.push_back(std::to_string(points.size()));
+      row.push_back(critical.reason);
+    }
+    out << line << '\n';
+    result.rows.push_back(std::move(row));
+  }
+  write_file_atomically(sweep_directory / "critical_angle.csv", csv_text(result));
+}
+
+}  // namespace
+
+int summarize_sweep(const std::filesystem::path& sweep_directory, std::ostream& out,
+                    std::ostream& err) {
+  const std::filesystem::path sweep_csv = sweep_directory / "sweep.csv";
+  if (!std::filesystem::exists(sweep_csv)) {
+    err << "rodsort: " << sweep_directory.string()
+        << " is not a sweep directory (no sweep.csv; `rodsort sweep` writes one)\n";
+    return kExitUsage;
+  }
+  CsvTable table = read_csv(sweep_csv);
+  const auto status_column = table.column(kSweepStatusColumn);
+  if (table.header.empty() || table.header[0] != kSweepPointColumn || !status_column) {
+    err << "rodsort: " << sweep_csv.string() << " is not a sweep table (no point and status "
+        << "columns)\n";
+    return kExitFailure;
+  }
+  const std::vector<std::string> keys(table.header.begin() + 1,
+                                      table.header.begin() + static_cast<long>(*status_column));
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> values;
+  for (const auto& row : table.rows) {
+    names.push_back(row[0]);
+    values.emplace_back(row.begin() + 1, row.begin() + static_cast<long>(*status_column));
+  }
+  write_sweep_csv(sweep_directory, keys, names, values);
+  table = read_csv(sweep_csv);
+
+  std::vector<std::string> shown = {kSweepPointColumn};
+  shown.insert(shown.end(), keys.begin(), keys.end());
+  for (const char* column :
+       {kSweepStatusColumn, "eta_mean", "eta_spread", "eta_trap_mean", "simulated_s"}) {
+    if (table.column(column)) shown.push_back(column);
+  }
+  std::vector<std::vector<std::string>> printed = {shown};
+  for (const auto& row : table.rows) {
+    std::vector<std::string> cells;
+    for (const std::string& column : shown) {
+      const std::size_t index = *table.column(column);
+      const bool numeric = index > *status_column;
+      cells.push_back(numeric ? short_number(row[index]) : row[index]);
+    }
+    printed.push_back(std::move(cells));
+  }
+  out << "eta: trapping efficiency averaged over the last half of each run\n";
+  print_aligned(out, printed);
+  if (table.column(kAngleKey)) report_critical_angles(sweep_directory, table, keys, out);
+  return kExitOk;
+}
+
+}  // namespace rodsort::runner

@@ -1,0 +1,261 @@
+#include "runner/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <ostream>
+#include <thread>
+
+#include "runner/atomic_file.hpp"
+#include "runner/csv_table.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/interrupt.hpp"
+#include "runner/json_text.hpp"
+#include "runner/process_pool.hpp"
+#include "runner/progress.hpp"
+#include "runner/run_command.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/run_record.hpp"
+#include "runner/run_summary.hpp"
+#include "scenarios/scenario.hpp"
+#include "scenarios/sweep.hpp"
+
+namespace rodsort::runner {
+namespace {
+
+constexpr const char* kSweepCsvFile = "sweep.csv";
+constexpr const char* kScenariosDirectory = "scenarios";
+constexpr const char* kLogsDirectory = "logs";
+
+enum class PointAction { kSkip, kStart, kResume, kRestart };
+
+struct PointPlan {
+  std::string name;
+  std::vector<std::string> values;  ///< of the swept keys, as written
+  std::string resolved_yaml;
+  PointAction action = PointAction::kStart;
+};
+
+/// A number for sweep.csv: shortest exact text, "nan" when undefined.
+std::string number_text(double value) { return std::isnan(value) ? "nan" : json_number(value); }
+
+/// What to do with a point, given what its run directory holds; empty message when it may go on.
+PointAction decide(const std::filesystem::path& run_directory, const std::string& resolved_yaml,
+                   bool force, std::string& conflict) {
+  if (!holds_run(run_directory)) return PointAction::kStart;
+  const std::filesystem::path resolved = run_directory / kResolvedScenarioFile;
+  const bool same_scenario =
+      std::filesystem::exists(resolved) && read_file(resolved) == resolved_yaml;
+  if (!same_scenario) {
+    if (force) return PointAction::kRestart;
+    conflict = run_directory.string() + " holds a run of a different scenario";
+    return PointAction::kSkip;
+  }
+  const auto record = read_run_record(run_directory);
+  if (record && record->status == RunStatus::kComplete) return PointAction::kSkip;
+  if (record && std::filesystem::exists(run_directory / kCheckpointFile)) {
+    return PointAction::kResume;
+  }
+  return PointAction::kRestart;
+}
+
+std::vector<std::string> point_command(const std::filesystem::path& executable,
+                                       const std::filesystem::path& scenario_file,
+                                       const std::filesystem::path& run_directory,
+                                       PointAction action) {
+  const std::string program = executable.string();
+  if (action == PointAction::kResume) return {program, "run", "--resume", run_directory.string()};
+  std::vector<std::string> argv = {program, "run", scenario_file.string(), "-o",
+                                   run_directory.string()};
+  if (action == PointAction::kRestart) argv.push_back("--force");
+  return argv;
+}
+
+std::string describe_result(const JobResult& result) {
+  if (result.signal != 0) return std::string("killed by SIG") + sigabbrev_np(result.signal);
+  switch (result.exit_code) {
+    case kExitOk:
+      return "complete";
+    case kExitInterrupted:
+      return "interrupted";
+    default:
+      return "failed (exit " + std::to_string(result.exit_code) + ")";
+  }
+}
+
+int default_jobs() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores == 0 ? 1 : static_cast<int>(cores);
+}
+
+}  // namespace
+
+void write_sweep_csv(const std::filesystem::path& sweep_directory,
+                     const std::vector<std::string>& keys, const std::vector<std::string>& points,
+                     const std::vector<std::vector<std::string>>& values) {
+  std::vector<RunSummary> summaries;
+  std::vector<std::string> eta_columns;
+  for (const std::string& point : points) {
+    summaries.push_back(summarize_run(sweep_directory / point));
+    for (const auto& [name, mean] : summaries.back().eta_means) {
+      if (std::find(eta_columns.begin(), eta_columns.end(), name) == eta_columns.end()) {
+        eta_columns.push_back(name);
+      }
+    }
+  }
+  CsvTable table;
+  table.header.push_back(kSweepPointColumn);
+  table.header.insert(table.header.end(), keys.begin(), keys.end());
+  table.header.push_back(kSweepStatusColumn);
+  for (const std::string& column : eta_columns) {
+    table.header.push_back(column + "_mean");
+    if (column == "eta") {
+      table.header.push_back("eta_spread");
+      table.header.push_back("eta_time_to_90_s");
+    }
+  }
+  for (const char* column : {"simulated_s", "wall_s", "cpu_s_per_simulated_s"}) {
+    table.header.push_back(column);
+  }
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const RunSummary& summary = summaries[p];
+    std::vector<std::string> row = {points[p]};
+    row.insert(row.end(), values[p].begin(), values[p].end());
+    row.push_back(summary.status);
+    for (const std::string& column : eta_columns) {
+      row.push_back(number_text(summary.eta_mean(column)));
+      if (column == "eta") {
+        row.push_back(number_text(summary.eta_spread));
+        row.push_back(number_text(summary.eta_time_to_90));
+      }
+    }
+    row.push_back(number_text(summary.simulated_s));
+    row.push_back(number_text(summary.wall_s));
+    row.push_back(number_text(summary.cpu_per_simulated_s));
+    table.rows.push_back(std::move(row));
+  }
+  write_file_atomically(sweep_directory / kSweepCsvFile, csv_text(table));
+}
+
+int run_sweep(const SweepRequest& request, std::ostream& err) {
+  const scenarios::SweepLoadResult loaded = scenarios::load_sweep(request.sweep_file, true);
+  err << scenarios::format_diagnostics(loaded.diagnostics);
+  if (!loaded.ok()) {
+    err << "rodsort: " << request.sweep_file.string() << " refused; nothing was written\n";
+    return kExitUsage;
+  }
+  const scenarios::Sweep& sweep = *loaded.sweep;
+  const std::filesystem::path directory =
+      request.output.empty() ? default_run_directory(sweep.name) : request.output;
+
+  std::vector<PointPlan> points;
+  std::vector<std::string> conflicts;
+  for (const scenarios::SweepPoint& point : sweep.points) {
+    const scenarios::LoadResult scenario = scenarios::load_sweep_point(sweep, point);
+    if (!scenario.ok()) {
+      err << scenarios::format_diagnostics(scenario.diagnostics);
+      return kExitUsage;
+    }
+    PointPlan plan;
+    plan.name = point.name;
+    for (const scenarios::Override& value : point.overrides)
+      plan.values.push_back(value.value_text());
+    plan.resolved_yaml = scenarios::resolved_yaml(*scenario.scenario);
+    std::string conflict;
+    plan.action = decide(directory / point.name, plan.resolved_yaml, request.force, conflict);
+    if (!conflict.empty()) conflicts.push_back(conflict);
+    points.push_back(std::move(plan));
+  }
+  if (!conflicts.empty()) {
+    for (const std::string& conflict : conflicts) err << "rodsort: " << conflict << '\n';
+    err << "rodsort: the sweep file changed since these points ran; rerun them with --force, or "
+           "sweep into a new directory with -o\n";
+    return kExitUsage;
+  }
+
+  std::filesystem::create_directories(directory / kScenariosDirectory);
+  std::filesystem::create_directories(directory / kLogsDirectory);
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> values;
+  for (const PointPlan& point : points) {
+    names.push_back(point.name);
+    values.push_back(point.values);
+  }
+  write_sweep_csv(directory, sweep.keys, names, values);
+
+  const std::filesystem::path executable =
+      request.executable.empty() ? current_executable() : request.executable;
+  std::vector<Job> jobs;
+  std::vector<std::size_t> job_point;
+  std::size_t skipped = 0;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const PointPlan& point = points[p];
+    if (point.action == PointAction::kSkip) {
+      ++skipped;
+      continue;
+    }
+    const std::filesystem::path scenario_file =
+        directory / kScenariosDirectory / (point.name + ".yaml");
+    if (point.action != PointAction::kResume) {
+      write_file_atomically(scenario_file, point.resolved_yaml);
+    }
+    jobs.push_back({point_command(executable, scenario_file, directory / point.name, point.action),
+                    directory / kLogsDirectory / (point.name + ".log")});
+    job_point.push_back(p);
+  }
+  const int parallel =
+      std::max(1, std::min(request.jobs > 0 ? request.jobs : default_jobs(),
+                           static_cast<int>(std::max<std::size_t>(jobs.size(), 1))));
+  const auto log = [&request](const std::string& line) {
+    if (request.log == nullptr) return;
+    std::fprintf(request.log, "%s\n", line.c_str());
+    std::fflush(request.log);
+  };
+  log("rodsort: sweep " + sweep.name + ": " + std::to_string(points.size()) + " points into " +
+      directory.string() + " (" + std::to_string(skipped) + " already complete, " +
+      std::to_string(jobs.size()) + " to run, " + std::to_string(parallel) + " at a time)");
+
+  const InterruptGuard guard;
+  std::size_t finished = 0;
+  int failures = 0;
+  PoolCallbacks callbacks;
+  callbacks.on_start = [&](std::size_t job) {
+    const PointPlan& point = points[job_point[job]];
+    log("  started  " + point.name + (point.action == PointAction::kResume ? " (resuming)" : ""));
+  };
+  callbacks.on_finish = [&](std::size_t job, const JobResult& result) {
+    const PointPlan& point = points[job_point[job]];
+    ++finished;
+    if (result.exit_code != kExitOk && result.exit_code != kExitInterrupted) ++failures;
+    std::string line = "  [" + std::to_string(finished) + "/" + std::to_string(jobs.size()) + "] " +
+                       point.name + ": " + describe_result(result);
+    try {
+      const RunSummary summary = summarize_run(directory / point.name);
+      if (result.exit_code == kExitOk) {
+        char text[128];
+        std::snprintf(text, sizeof text, " in %s, %.3g CPU-s per sim-s, eta = %.3g",
+                      format_duration(summary.wall_s).c_str(), summary.cpu_per_simulated_s,
+                      summary.eta_mean());
+        line += text;
+      }
+      write_sweep_csv(directory, sweep.keys, names, values);
+    } catch (const std::exception& error) {
+      line += std::string(" (") + error.what() + ")";
+    }
+    if (result.exit_code != kExitOk) line += "; see " + jobs[job].log.string();
+    log(line);
+  };
+  run_jobs(jobs, parallel, callbacks);
+  write_sweep_csv(directory, sweep.keys, names, values);
+
+  if (InterruptGuard::received() != 0) {
+    log("rodsort: sweep interrupted; run the same command again to continue it");
+    return kExitInterrupted;
+  }
+  log("rodsort: sweep " + sweep.name + " done: " + (directory / kSweepCsvFile).string() +
+      (failures > 0 ? " (" + std::to_string(failures) + " points failed)" : ""));
+  return failures > 0 ? kExitFailure : kExitOk;
+}
+
+}  // namespace rodsort::runner

@@ -1,0 +1,46 @@
+#pragma once
+// `rodsort sweep`: every point of a sweep file run as its own `rodsort run` process, N at a time
+// (one simulation uses one core). The sweep directory holds:
+//
+//   scenarios/<point>.yaml  the point's resolved scenario, which its run reads
+//   <point>/                the point's run directory (see docs/cli.md)
+//   logs/<point>.log        what the point's process printed
+//   sweep.csv               one row per point: swept values, status, time-averaged eta, cost
+//
+// Running a sweep again continues it: complete points are skipped, stopped ones resumed from their
+// checkpoints. A point whose run directory holds a different scenario (the sweep file changed) is
+// refused unless --force, so that sweep.csv never mixes two definitions of a point.
+
+#include <cstdio>
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace rodsort::runner {
+
+struct SweepRequest {
+  std::filesystem::path sweep_file;
+  std::filesystem::path output;  ///< the sweep directory; empty: runs/<sweep name>
+  int jobs = 0;                  ///< points run at once; 0: one per core
+  bool force = false;            ///< rerun points whose run holds a different scenario
+  /// The rodsort program the points run with; empty: this process's own executable.
+  std::filesystem::path executable;
+  std::FILE* log = stderr;  ///< progress lines; nullptr: none
+};
+
+/// Runs a sweep. kExitUsage when the sweep file or a point is refused (nothing written) or a point
+/// conflicts; kExitFailure when a point failed; kExitInterrupted when stopped by a signal.
+int run_sweep(const SweepRequest& request, std::ostream& err);
+
+/// The sweep.csv columns before the swept keys and after them, for readers of the file.
+inline constexpr const char* kSweepPointColumn = "point";
+inline constexpr const char* kSweepStatusColumn = "status";
+
+/// Rewrites sweep.csv of `sweep_directory` from the points' run directories: the rows `points`
+/// (names) with their swept `values` under `keys`.
+void write_sweep_csv(const std::filesystem::path& sweep_directory,
+                     const std::vector<std::string>& keys, const std::vector<std::string>& points,
+                     const std::vector<std::vector<std::string>>& values);
+
+}  // namespace rodsort::runner

@@ -1,0 +1,73 @@
+#include "runner/analyze.hpp"
+
+#include <catch2/catch.hpp>
+#include <sstream>
+
+#include "runner/atomic_file.hpp"
+#include "runner/csv_table.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/run_command.hpp"
+#include "runner/run_directory.hpp"
+#include "temp_directory.hpp"
+
+using namespace rodsort::runner;
+using rodsort::runner::testing::TempDirectory;
+
+namespace {
+
+std::filesystem::path run_tiny(const TempDirectory& directory) {
+  RunRequest request;
+  request.scenario = RODSORT_SOURCE_DIR "/tests/runner/data/tiny.yaml";
+  request.output = directory / "tiny";
+  request.options.log = nullptr;
+  std::ostringstream err;
+  REQUIRE(run_scenario_file(request, err) == kExitOk);
+  return request.output;
+}
+
+}  // namespace
+
+TEST_CASE("analyze recomputes the run's own metrics.csv exactly", "[runner][analyze]") {
+  TempDirectory directory;
+  const auto run = run_tiny(directory);
+  const std::string live = read_file(run / kMetricsCsvFile);
+  std::filesystem::remove(run / kMetricsCsvFile);
+  AnalyzeRequest request;
+  request.run_directory = run;
+  std::ostringstream err;
+  REQUIRE(analyze_run(request, err) == kExitOk);
+  CHECK(read_file(run / kMetricsCsvFile) == live);
+  CHECK_THAT(err.str(), Catch::Contains("11 frames"));
+}
+
+TEST_CASE("analyze measures saved frames with other metrics settings", "[runner][analyze]") {
+  TempDirectory directory;
+  const auto run = run_tiny(directory);
+  AnalyzeRequest request;
+  request.run_directory = run;
+  request.set_options = {"metrics.stationary_threshold=1000"};
+  std::ostringstream err;
+  CHECK(analyze_run(request, err) == kExitUsage);  // would overwrite the run's own metrics.csv
+  CHECK_THAT(err.str(), Catch::Contains("-o FILE"));
+
+  request.output = directory / "everything-stationary.csv";
+  REQUIRE(analyze_run(request, err) == kExitOk);
+  const CsvTable table = read_csv(request.output);
+  REQUIRE(!table.rows.empty());
+  for (const double stationary : table.numbers(*table.column("n_stationary"))) {
+    CHECK(stationary == 4);  // every rod is slower than 1000 mm/s
+  }
+
+  request.set_options = {"run.duration=1"};
+  CHECK(analyze_run(request, err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("metrics.* keys only"));
+}
+
+TEST_CASE("analyze refuses a directory that is not a run", "[runner][analyze]") {
+  TempDirectory directory;
+  AnalyzeRequest request;
+  request.run_directory = directory.path();
+  std::ostringstream err;
+  CHECK(analyze_run(request, err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("is not a run directory"));
+}

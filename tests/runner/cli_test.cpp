@@ -1,0 +1,92 @@
+// The rodsort program as a user meets it: help, exit codes, messages, and a run stopped by a real
+// signal and resumed.
+
+#include <catch2/catch.hpp>
+#include <csignal>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rodsort_program.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/run_record.hpp"
+#include "temp_directory.hpp"
+
+using namespace rodsort::runner;
+using rodsort::runner::testing::run_rodsort;
+using rodsort::runner::testing::TempDirectory;
+
+namespace {
+
+const std::string kTiny = RODSORT_SOURCE_DIR "/tests/runner/data/tiny.yaml";
+
+}  // namespace
+
+TEST_CASE("every subcommand has help", "[runner][cli]") {
+  TempDirectory scratch;
+  const auto top = run_rodsort({"--help"}, scratch.path());
+  CHECK(top.status == kExitOk);
+  CHECK_THAT(top.out, Catch::Contains("130"));  // the exit codes are documented
+  for (const char* command : {"run", "validate", "sweep", "analyze", "summarize"}) {
+    INFO(command);
+    const auto help = run_rodsort({command, "--help"}, scratch.path());
+    CHECK(help.status == kExitOk);
+    CHECK_THAT(help.out, Catch::Contains(std::string("rodsort ") + command));
+  }
+}
+
+TEST_CASE("bad arguments exit with status 2", "[runner][cli]") {
+  TempDirectory scratch;
+  CHECK(run_rodsort({}, scratch.path()).status == kExitUsage);
+  CHECK(run_rodsort({"frobnicate"}, scratch.path()).status == kExitUsage);
+  const auto no_scenario = run_rodsort({"run"}, scratch.path());
+  CHECK(no_scenario.status == kExitUsage);
+  CHECK_THAT(no_scenario.err, Catch::Contains("SCENARIO"));
+  CHECK(run_rodsort({"run", "missing.yaml"}, scratch.path()).status == kExitUsage);
+  CHECK(run_rodsort({"run", kTiny, "--resume", scratch.path().string()}, scratch.path()).status ==
+        kExitUsage);
+}
+
+TEST_CASE("validate prints the resolved scenario, or the errors", "[runner][cli]") {
+  TempDirectory scratch;
+  const auto valid = run_rodsort({"validate", kTiny}, scratch.path());
+  CHECK(valid.status == kExitOk);
+  CHECK_THAT(valid.out, Catch::Contains("name: tiny"));
+  CHECK_THAT(valid.out, Catch::Contains("frame_interval: 0.035"));
+  const auto refused = run_rodsort(
+      {"validate", kTiny, "--set", "trap.angle=190", "--set", "run.dt=-1"}, scratch.path());
+  CHECK(refused.status == kExitUsage);
+  CHECK(refused.out.empty());
+  CHECK_THAT(refused.err, Catch::Contains("--set trap.angle=190"));
+  CHECK_THAT(refused.err, Catch::Contains("run.dt"));
+  CHECK_THAT(refused.err, Catch::Contains("2 errors"));
+}
+
+TEST_CASE("a run stopped by SIGINT exits 130 and resumes to completion", "[runner][cli]") {
+  TempDirectory scratch;
+  const auto run = scratch / "run";
+  // Long enough that it is still running when its first frames are on disk.
+  const pid_t pid = rodsort::runner::testing::start_rodsort(
+      {"run", kTiny, "-o", run.string(), "--set", "run.duration=10", "--set",
+       "output.checkpoint_interval=5"},
+      scratch / "out.txt", scratch / "err.txt");
+  const auto rods = run / kRodsCsvFile;
+  while (!std::filesystem::exists(rods) || std::filesystem::file_size(rods) < 2000) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(pid, SIGINT);
+  REQUIRE(rodsort::runner::testing::wait_rodsort(pid) == kExitInterrupted);
+  const auto stopped = read_run_record(run);
+  REQUIRE(stopped.has_value());
+  CHECK(stopped->status == RunStatus::kInterrupted);
+  CHECK(stopped->simulated_s < 10.0);
+  CHECK_THAT(read_file(scratch / "err.txt"), Catch::Contains("rodsort run --resume"));
+
+  const auto resumed = run_rodsort({"run", "--resume", run.string(), "-q"}, scratch.path());
+  CHECK(resumed.status == kExitOk);
+  const auto done = read_run_record(run);
+  CHECK(done->status == RunStatus::kComplete);
+  CHECK(done->steps == 100000);
+  CHECK(done->sessions == 2);
+}

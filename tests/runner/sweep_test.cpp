@@ -1,0 +1,106 @@
+#include "runner/sweep.hpp"
+
+#include <catch2/catch.hpp>
+#include <sstream>
+#include <string>
+
+#include "rodsort_program.hpp"
+#include "runner/atomic_file.hpp"
+#include "runner/csv_table.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/summarize.hpp"
+#include "temp_directory.hpp"
+
+using namespace rodsort::runner;
+using rodsort::runner::testing::TempDirectory;
+
+namespace {
+
+// Two points of tiny.yaml, at trap angles 40 and 60 degrees.
+const std::string kTinySweep = RODSORT_SOURCE_DIR "/tests/runner/data/tiny-sweep.yaml";
+
+SweepRequest tiny_sweep(const std::filesystem::path& directory) {
+  SweepRequest request;
+  request.sweep_file = kTinySweep;
+  request.output = directory;
+  request.jobs = 2;
+  request.executable = rodsort::runner::testing::kRodsortProgram;
+  request.log = nullptr;
+  return request;
+}
+
+}  // namespace
+
+TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][sweep]") {
+  TempDirectory directory;
+  const auto sweep = directory / "sweep";
+  std::ostringstream err;
+  REQUIRE(run_sweep(tiny_sweep(sweep), err) == kExitOk);
+
+  const CsvTable table = read_csv(sweep / "sweep.csv");
+  REQUIRE(table.rows.size() == 2);
+  CHECK(table.header[0] == "point");
+  CHECK(table.header[1] == "trap.angle");
+  CHECK(table.header[2] == "status");
+  REQUIRE(table.column("eta_mean"));
+  REQUIRE(table.column("cpu_s_per_simulated_s"));
+  for (const auto& row : table.rows) {
+    INFO(row[0]);
+    CHECK(row[2] == "complete");
+    CHECK(std::filesystem::exists(sweep / row[0] / kRodsCsvFile));
+    CHECK(std::filesystem::exists(sweep / "logs" / (row[0] + ".log")));
+    CHECK(std::filesystem::exists(sweep / "scenarios" / (row[0] + ".yaml")));
+    CHECK(table.numbers(*table.column("eta_mean"))[0] >= 0.0);
+  }
+  CHECK(table.rows[0][1] == "40");
+  CHECK(table.rows[1][1] == "60");
+  CHECK_THAT(read_file(sweep / table.rows[0][0] / kResolvedScenarioFile),
+             Catch::Contains("angle: 40"));
+  CHECK_THAT(read_file(sweep / table.rows[1][0] / kResolvedScenarioFile),
+             Catch::Contains("angle: 60"));
+
+  SECTION("running it again skips the finished points") {
+    const auto before = std::filesystem::last_write_time(sweep / table.rows[0][0] / kRodsCsvFile);
+    SweepRequest again = tiny_sweep(sweep);
+    std::FILE* log = std::tmpfile();
+    again.log = log;
+    CHECK(run_sweep(again, err) == kExitOk);
+    CHECK(std::filesystem::last_write_time(sweep / table.rows[0][0] / kRodsCsvFile) == before);
+    std::rewind(log);
+    char line[256] = {};
+    CHECK(std::fgets(line, sizeof line, log) != nullptr);
+    CHECK_THAT(std::string(line), Catch::Contains("2 already complete, 0 to run"));
+    std::fclose(log);
+  }
+
+  SECTION("summarize prints eta per point and looks for theta_c") {
+    std::ostringstream out;
+    CHECK(summarize_sweep(sweep, out, err) == kExitOk);
+    CHECK_THAT(out.str(), Catch::Contains("angle-40"));
+    CHECK_THAT(out.str(), Catch::Contains("angle-60"));
+    CHECK_THAT(out.str(), Catch::Contains("theta_c"));
+    CHECK(std::filesystem::exists(sweep / "critical_angle.csv"));
+  }
+}
+
+TEST_CASE("a sweep with a bad point is refused before anything is written", "[runner][sweep]") {
+  TempDirectory directory;
+  write_file_atomically(directory / "tiny.yaml",
+                        read_file(RODSORT_SOURCE_DIR "/tests/runner/data/tiny.yaml"));
+  write_file_atomically(directory / "bad-sweep.yaml",
+                        "base: tiny.yaml\ngrid:\n  - trap.angle: [60, 190]\n");
+  SweepRequest request = tiny_sweep(directory / "sweep");
+  request.sweep_file = directory / "bad-sweep.yaml";
+  std::ostringstream err;
+  CHECK(run_sweep(request, err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("trap.angle"));
+  CHECK_FALSE(std::filesystem::exists(directory / "sweep"));
+}
+
+TEST_CASE("summarize refuses a directory that is not a sweep", "[runner][sweep]") {
+  TempDirectory directory;
+  std::ostringstream out, err;
+  CHECK(summarize_sweep(directory.path(), out, err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("not a sweep directory"));
+}
