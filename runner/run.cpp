@@ -24,6 +24,7 @@
 #include "runner/progress.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/run_record.hpp"
+#include "runner/run_summary.hpp"
 #include "runner/version.hpp"
 
 namespace rodsort::runner {
@@ -158,6 +159,12 @@ class RunSession {
     log("rodsort: complete: %s in %s, %.3g CPU-s per simulated s\n", directory_.c_str(),
         format_duration(total_wall_s()).c_str(),
         simulated_s > 0.0 ? (process_cpu_seconds() - session_cpu0_s_) / simulated_s : 0.0);
+    if (plan_.metrics.trap_area > 0.0) {
+      const RunSummary summary = summarize_run(directory_);
+      log("rodsort: trapping efficiency eta, mean over the last half: %.3g (spread %.2g); every "
+          "frame in %s\n",
+          summary.eta_mean(), summary.eta_spread, (directory_ / kMetricsCsvFile).c_str());
+    }
     return kExitOk;
   }
 
