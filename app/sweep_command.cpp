@@ -20,7 +20,9 @@ Command add_sweep_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sweep->add_flag("--force", request->force,
                   "Rerun points whose run directory holds a different scenario");
-  return {sweep, [request] { return runner::run_sweep(*request, std::cerr); }};
+  sweep->add_flag("--dry-run", request->dry_run,
+                  "Check every point and list what would run; write nothing");
+  return {sweep, [request] { return runner::run_sweep(*request, std::cout, std::cerr); }};
 }
 
 }  // namespace rodsort::app

@@ -84,6 +84,31 @@ std::string describe_result(const JobResult& result) {
   }
 }
 
+const char* describe_action(PointAction action) {
+  switch (action) {
+    case PointAction::kSkip:
+      return "complete, skipped";
+    case PointAction::kStart:
+      return "to run";
+    case PointAction::kResume:
+      return "to resume from its checkpoint";
+    case PointAction::kRestart:
+      return "to run again (--force)";
+  }
+  return "";
+}
+
+void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& points,
+                const std::filesystem::path& directory, std::ostream& out) {
+  out << "sweep " << sweep.name << ": " << points.size() << " points into " << directory.string()
+      << ", over";
+  for (const std::string& key : sweep.keys) out << ' ' << key;
+  out << '\n';
+  for (const PointPlan& point : points) {
+    out << "  " << point.name << ": " << describe_action(point.action) << '\n';
+  }
+}
+
 int default_jobs() {
   const unsigned cores = std::thread::hardware_concurrency();
   return cores == 0 ? 1 : static_cast<int>(cores);
@@ -138,7 +163,7 @@ void write_sweep_csv(const std::filesystem::path& sweep_directory,
   write_file_atomically(sweep_directory / kSweepCsvFile, csv_text(table));
 }
 
-int run_sweep(const SweepRequest& request, std::ostream& err) {
+int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err) {
   const scenarios::SweepLoadResult loaded = scenarios::load_sweep(request.sweep_file, true);
   err << scenarios::format_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) {
@@ -172,6 +197,11 @@ int run_sweep(const SweepRequest& request, std::ostream& err) {
     err << "rodsort: the sweep file changed since these points ran; rerun them with --force, or "
            "sweep into a new directory with -o\n";
     return kExitUsage;
+  }
+
+  if (request.dry_run) {
+    print_plan(sweep, points, directory, out);
+    return kExitOk;
   }
 
   std::filesystem::create_directories(directory / kScenariosDirectory);

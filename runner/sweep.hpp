@@ -24,14 +24,16 @@ struct SweepRequest {
   std::filesystem::path output;  ///< the sweep directory; empty: runs/<sweep name>
   int jobs = 0;                  ///< points run at once; 0: one per core
   bool force = false;            ///< rerun points whose run holds a different scenario
+  bool dry_run = false;          ///< check and list the points, run nothing, write nothing
   /// The rodsort program the points run with; empty: this process's own executable.
   std::filesystem::path executable;
   std::FILE* log = stderr;  ///< progress lines; nullptr: none
 };
 
-/// Runs a sweep. kExitUsage when the sweep file or a point is refused (nothing written) or a point
-/// conflicts; kExitFailure when a point failed; kExitInterrupted when stopped by a signal.
-int run_sweep(const SweepRequest& request, std::ostream& err);
+/// Runs a sweep (with dry_run, lists its points on `out`). kExitUsage when the sweep file or a
+/// point is refused (nothing written) or a point conflicts; kExitFailure when a point failed;
+/// kExitInterrupted when stopped by a signal.
+int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err);
 
 /// The sweep.csv columns before the swept keys and after them, for readers of the file.
 inline constexpr const char* kSweepPointColumn = "point";

@@ -35,8 +35,8 @@ SweepRequest tiny_sweep(const std::filesystem::path& directory) {
 TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][sweep]") {
   TempDirectory directory;
   const auto sweep = directory / "sweep";
-  std::ostringstream err;
-  REQUIRE(run_sweep(tiny_sweep(sweep), err) == kExitOk);
+  std::ostringstream out, err;
+  REQUIRE(run_sweep(tiny_sweep(sweep), out, err) == kExitOk);
 
   const CsvTable table = read_csv(sweep / "sweep.csv");
   REQUIRE(table.rows.size() == 2);
@@ -65,7 +65,7 @@ TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][
     SweepRequest again = tiny_sweep(sweep);
     std::FILE* log = std::tmpfile();
     again.log = log;
-    CHECK(run_sweep(again, err) == kExitOk);
+    CHECK(run_sweep(again, out, err) == kExitOk);
     CHECK(std::filesystem::last_write_time(sweep / table.rows[0][0] / kRodsCsvFile) == before);
     std::rewind(log);
     char line[256] = {};
@@ -75,7 +75,6 @@ TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][
   }
 
   SECTION("summarize prints eta per point and looks for theta_c") {
-    std::ostringstream out;
     CHECK(summarize_sweep(sweep, out, err) == kExitOk);
     CHECK_THAT(out.str(), Catch::Contains("angle-40"));
     CHECK_THAT(out.str(), Catch::Contains("angle-60"));
@@ -92,9 +91,21 @@ TEST_CASE("a sweep with a bad point is refused before anything is written", "[ru
                         "base: tiny.yaml\ngrid:\n  - trap.angle: [60, 190]\n");
   SweepRequest request = tiny_sweep(directory / "sweep");
   request.sweep_file = directory / "bad-sweep.yaml";
-  std::ostringstream err;
-  CHECK(run_sweep(request, err) == kExitUsage);
+  std::ostringstream out, err;
+  CHECK(run_sweep(request, out, err) == kExitUsage);
   CHECK_THAT(err.str(), Catch::Contains("trap.angle"));
+  CHECK_FALSE(std::filesystem::exists(directory / "sweep"));
+}
+
+TEST_CASE("a dry run lists the points and writes nothing", "[runner][sweep]") {
+  TempDirectory directory;
+  SweepRequest request = tiny_sweep(directory / "sweep");
+  request.dry_run = true;
+  std::ostringstream out, err;
+  CHECK(run_sweep(request, out, err) == kExitOk);
+  CHECK_THAT(out.str(), Catch::Contains("2 points"));
+  CHECK_THAT(out.str(), Catch::Contains("angle-40: to run"));
+  CHECK_THAT(out.str(), Catch::Contains("angle-60: to run"));
   CHECK_FALSE(std::filesystem::exists(directory / "sweep"));
 }
 
