@@ -4,6 +4,7 @@
 
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
+#include "runner/run_lock.hpp"
 #include "runner/run_plan.hpp"
 #include "runner/run_record.hpp"
 #include "scenarios/scenario.hpp"
@@ -46,6 +47,12 @@ int run_scenario_file(const RunRequest& request, std::ostream& err) {
     err << "rodsort: " << directory.string() << " exists and is not a directory\n";
     return kExitUsage;
   }
+  std::filesystem::create_directories(directory);
+  const auto lock = RunLock::acquire(directory);
+  if (!lock) {
+    err << "rodsort: another process is running in " << directory.string() << '\n';
+    return kExitFailure;
+  }
   if (holds_run(directory)) {
     if (!request.force) {
       err << "rodsort: " << directory.string() << " already holds "
@@ -61,6 +68,15 @@ int run_scenario_file(const RunRequest& request, std::ostream& err) {
 
 int resume_run_directory(const std::filesystem::path& directory, const RunOptions& options,
                          std::ostream& err) {
+  if (!std::filesystem::is_directory(directory)) {
+    err << "rodsort: " << directory.string() << " holds no run to resume (no such directory)\n";
+    return kExitUsage;
+  }
+  const auto lock = RunLock::acquire(directory);
+  if (!lock) {
+    err << "rodsort: another process is running in " << directory.string() << '\n';
+    return kExitFailure;
+  }
   const auto record = read_run_record(directory);
   if (!record || !std::filesystem::exists(directory / kCheckpointFile)) {
     err << "rodsort: " << directory.string()

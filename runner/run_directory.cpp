@@ -7,9 +7,8 @@
 namespace rodsort::runner {
 namespace {
 
-constexpr std::array kRunFiles = {kScenarioSourceFile, kResolvedScenarioFile, kRodsCsvFile,
-                                  kMetricsCsvFile,     kTrajectoryFile,       kCheckpointFile,
-                                  kRunRecordFile,      kOverridesFile};
+constexpr std::array kRunFiles = {kResolvedScenarioFile, kRodsCsvFile,    kMetricsCsvFile,
+                                  kTrajectoryFile,       kCheckpointFile, kRunRecordFile};
 
 bool is_snapshot(const std::filesystem::path& file) {
   const std::string name = file.filename().string();

@@ -7,22 +7,22 @@
 
 namespace rodsort::runner {
 
-inline constexpr const char* kScenarioSourceFile = "scenario.yaml";  ///< the file as given
 inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.yaml";
 inline constexpr const char* kRodsCsvFile = "rods.csv";
 inline constexpr const char* kMetricsCsvFile = "metrics.csv";
 inline constexpr const char* kTrajectoryFile = "trajectory.dump";
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 inline constexpr const char* kRunRecordFile = "run.json";
-inline constexpr const char* kOverridesFile = "overrides.txt";  ///< the --set arguments, one a line
 
 /// "snapshot-t12.5.bullet": the .bullet snapshot taken at simulated time `time_s`.
 std::string snapshot_file_name(double time_s);
 
-/// Whether `directory` already holds (part of) a run: any of the files a run writes.
+/// Whether `directory` already holds (part of) a run: any of the files a run writes (its lock file
+/// alone does not count).
 bool holds_run(const std::filesystem::path& directory);
 
-/// Removes the files a run writes from `directory`, and nothing else (for --force).
+/// Removes the files a run writes from `directory`, and nothing else (for --force); the lock file
+/// stays, since the caller holds it.
 void clear_run(const std::filesystem::path& directory);
 
 }  // namespace rodsort::runner

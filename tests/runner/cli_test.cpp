@@ -7,7 +7,9 @@
 #include <thread>
 #include <vector>
 
+#include "metrics/rods_csv.hpp"
 #include "rodsort_program.hpp"
+#include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/run_record.hpp"
@@ -89,4 +91,47 @@ TEST_CASE("a run stopped by SIGINT exits 130 and resumes to completion", "[runne
   CHECK(done->status == RunStatus::kComplete);
   CHECK(done->steps == 100000);
   CHECK(done->sessions == 2);
+}
+
+TEST_CASE("a run killed with SIGKILL leaves readable files and resumes", "[runner][cli]") {
+  TempDirectory scratch;
+  const auto run = scratch / "run";
+  const pid_t pid = rodsort::runner::testing::start_rodsort(
+      {"run", kTiny, "-o", run.string(), "--set", "run.duration=6", "--set",
+       "output.checkpoint_interval=0.7"},
+      scratch / "out.txt", scratch / "err.txt");
+  // Kill it once it has checkpointed past t = 0 and written frames after that checkpoint.
+  std::int64_t checkpointed_steps = 0;
+  while (checkpointed_steps == 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const auto record = read_run_record(run);
+    if (record && record->steps > 0) checkpointed_steps = record->steps;
+  }
+  const auto rods = run / kRodsCsvFile;
+  const auto size_at_checkpoint = std::filesystem::file_size(rods);
+  while (std::filesystem::file_size(rods) < size_at_checkpoint + 2000) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGKILL);
+  REQUIRE(rodsort::runner::testing::wait_rodsort(pid) == 128 + SIGKILL);
+
+  const auto killed = read_run_record(run);
+  REQUIRE(killed.has_value());
+  CHECK(killed->status == RunStatus::kRunning);  // it had no chance to say otherwise
+  const auto frames = rodsort::metrics::read_rods_csv(rods);
+  CHECK(frames.error.empty());
+  CHECK(frames.frames.size() >= 2);
+  CHECK_NOTHROW(read_csv(run / kMetricsCsvFile));
+
+  const auto resumed = run_rodsort({"run", "--resume", run.string(), "-q"}, scratch.path());
+  CHECK(resumed.status == kExitOk);
+  const auto after = rodsort::metrics::read_rods_csv(rods);
+  REQUIRE(after.error.empty());
+  CHECK(after.warning.empty());
+  // Frames every 350 steps of 1e-4 s up to 6 s: steps 0, 350, ..., 59850, each once.
+  REQUIRE(after.frames.size() == 172);
+  for (std::size_t f = 0; f < after.frames.size(); ++f) {
+    CHECK(after.frames[f].time == Approx(0.035 * static_cast<double>(f)).margin(1e-9));
+  }
+  CHECK(read_run_record(run)->status == RunStatus::kComplete);
 }

@@ -12,6 +12,7 @@
 #include "runner/exit_code.hpp"
 #include "runner/run_command.hpp"
 #include "runner/run_directory.hpp"
+#include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
 #include "scenarios/scenario.hpp"
 #include "temp_directory.hpp"
@@ -282,4 +283,22 @@ TEST_CASE("a resumed run writes exactly what the uninterrupted run writes",
   std::ostringstream err;
   REQUIRE(resume_run_directory(directory / "stopped", silent(), err) == kExitOk);
   check_same_outputs(directory / "whole", directory / "stopped");
+}
+
+TEST_CASE("one process at a time runs in a run directory", "[runner][run]") {
+  TempDirectory directory;
+  const auto run = directory / "tiny";
+  REQUIRE(run_tiny(run) == kExitOk);
+  const auto held = RunLock::acquire(run);
+  REQUIRE(held.has_value());
+  std::ostringstream err;
+  CHECK(resume_run_directory(run, silent(), err) == kExitFailure);
+  RunRequest request;
+  request.scenario = kTiny;
+  request.output = run;
+  request.force = true;
+  request.options = silent();
+  CHECK(run_scenario_file(request, err) == kExitFailure);
+  CHECK_THAT(err.str(), Catch::Contains("another process is running in"));
+  CHECK(read_run_record(run)->status == RunStatus::kComplete);
 }
