@@ -142,14 +142,23 @@ class RunSession {
     const bool terminal = options_.log != nullptr && isatty(fileno(options_.log));
     std::optional<ProgressReporter> progress;
     if (options_.show_progress && options_.log != nullptr) progress.emplace(options_.log, terminal);
+    bool stop_announced = false;
     while (simulation_.step_count() < schedule_.total_steps) {
-      if (const int signal_number = InterruptGuard::received(); signal_number != 0) {
-        return stop_on_signal(signal_number, progress);
-      }
       simulation_.step();
       const std::int64_t step = simulation_.step_count();
       handle_events(step);
       if (options_.after_step) options_.after_step(step);
+      if (const int signal_number = InterruptGuard::received(); signal_number != 0) {
+        // Stop where a checkpoint continues the run exactly: at a frame (see run.hpp).
+        if (schedule_.is_frame(step)) return stop_on_signal(signal_number, progress);
+        if (!stop_announced) {
+          log("\nrodsort: got SIG%s; stopping at the next frame, t = %g s\n",
+              sigabbrev_np(signal_number),
+              plan_.model.dt *
+                  static_cast<double>((step / schedule_.frame_steps + 1) * schedule_.frame_steps));
+          stop_announced = true;
+        }
+      }
       if (progress && step % kProgressEverySteps == 0) progress->update(sample());
     }
     if (last_checkpoint_step_ != simulation_.step_count()) write_checkpoint_now();
@@ -169,7 +178,7 @@ class RunSession {
   }
 
   int stop_on_signal(int signal_number, std::optional<ProgressReporter>& progress) {
-    write_checkpoint_now();
+    if (last_checkpoint_step_ != simulation_.step_count()) write_checkpoint_now();
     const std::string message = std::string("stopped by SIG") + sigabbrev_np(signal_number) +
                                 " at t = " + std::to_string(simulation_.time()) + " s";
     write_record(RunStatus::kInterrupted, message);
@@ -193,7 +202,8 @@ class RunSession {
           directory_ / snapshot_file_name(schedule_.snapshots[next_snapshot_].time_s));
       ++next_snapshot_;
     }
-    if (step > 0 && schedule_.is_checkpoint(step)) write_checkpoint_now();
+    if (frame_due) simulation_.restore(simulation_.state());
+    if (schedule_.is_checkpoint(step)) write_checkpoint_now();
   }
 
   void write_frame(const engine::Frame& frame) {

@@ -134,4 +134,15 @@ TEST_CASE("a run killed with SIGKILL leaves readable files and resumes", "[runne
     CHECK(after.frames[f].time == Approx(0.035 * static_cast<double>(f)).margin(1e-9));
   }
   CHECK(read_run_record(run)->status == RunStatus::kComplete);
+
+  // And it is the same run as one never stopped.
+  const auto whole = scratch / "whole";
+  REQUIRE(run_rodsort({"run", kTiny, "-o", whole.string(), "-q", "--set", "run.duration=6", "--set",
+                       "output.checkpoint_interval=0.7"},
+                      scratch.path())
+              .status == kExitOk);
+  for (const char* file : {kRodsCsvFile, kMetricsCsvFile, kTrajectoryFile}) {
+    INFO(file);
+    CHECK(read_file(whole / file) == read_file(run / file));
+  }
 }
