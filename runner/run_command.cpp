@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "runner/exit_code.hpp"
+#include "runner/file_kind.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/run_lock.hpp"
 #include "runner/run_plan.hpp"
@@ -26,6 +27,13 @@ std::string describe_existing_run(const std::filesystem::path& directory) {
   return "the files of a run";
 }
 
+void hint_if_sweep(const std::filesystem::path& file, std::ostream& err) {
+  if (guess_file_kind(file) == FileKind::kSweep) {
+    err << "rodsort: " << file.string() << " looks like a sweep file: run it with `rodsort sweep "
+        << file.string() << "` (add --dry-run to check its points)\n";
+  }
+}
+
 }  // namespace
 
 std::filesystem::path default_run_directory(const std::string& name) {
@@ -38,6 +46,7 @@ int run_scenario_file(const RunRequest& request, std::ostream& err) {
   err << scenarios::format_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) {
     err << "rodsort: " << request.scenario.string() << " refused; nothing was written\n";
+    hint_if_sweep(request.scenario, err);
     return kExitUsage;
   }
   const scenarios::Scenario& scenario = *loaded.scenario;
@@ -103,7 +112,10 @@ int validate_scenario_file(const std::filesystem::path& scenario,
                            std::ostream& err) {
   const scenarios::LoadResult loaded = scenarios::load_scenario_with_options(scenario, set_options);
   err << scenarios::format_diagnostics(loaded.diagnostics);
-  if (!loaded.ok()) return kExitUsage;
+  if (!loaded.ok()) {
+    hint_if_sweep(scenario, err);
+    return kExitUsage;
+  }
   out << scenarios::resolved_yaml(*loaded.scenario);
   return kExitOk;
 }

@@ -10,6 +10,7 @@
 #include "runner/atomic_file.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
+#include "runner/file_kind.hpp"
 #include "runner/interrupt.hpp"
 #include "runner/json_text.hpp"
 #include "runner/process_pool.hpp"
@@ -168,6 +169,11 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
   err << scenarios::format_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) {
     err << "rodsort: " << request.sweep_file.string() << " refused; nothing was written\n";
+    if (guess_file_kind(request.sweep_file) == FileKind::kScenario) {
+      err << "rodsort: " << request.sweep_file.string()
+          << " looks like a scenario: run it with `rodsort run " << request.sweep_file.string()
+          << "`\n";
+    }
     return kExitUsage;
   }
   const scenarios::Sweep& sweep = *loaded.sweep;

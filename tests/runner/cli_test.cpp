@@ -146,3 +146,14 @@ TEST_CASE("a run killed with SIGKILL leaves readable files and resumes", "[runne
     CHECK(read_file(whole / file) == read_file(run / file));
   }
 }
+
+TEST_CASE("a sweep file given to run, or a scenario given to sweep, gets a hint", "[runner][cli]") {
+  TempDirectory scratch;
+  const std::string sweep = RODSORT_SOURCE_DIR "/tests/runner/data/tiny-sweep.yaml";
+  const auto validated = run_rodsort({"validate", sweep}, scratch.path());
+  CHECK(validated.status == kExitUsage);
+  CHECK_THAT(validated.err, Catch::Contains("looks like a sweep file"));
+  const auto swept = run_rodsort({"sweep", kTiny, "--dry-run"}, scratch.path());
+  CHECK(swept.status == kExitUsage);
+  CHECK_THAT(swept.err, Catch::Contains("looks like a scenario"));
+}
