@@ -140,6 +140,7 @@ RenderResult render_run(const RenderRequest& request, const Scene& scene,
   }
 
   std::optional<MarkedFrame> previous;
+  double last_interval = 0.0;  ///< between the last two frames [s]
   MarkedFrame current;
   long index = 0;
   while (reader.next(current.frame)) {
@@ -163,6 +164,7 @@ RenderResult render_run(const RenderRequest& request, const Scene& scene,
                   << " movie frames (t = " << format_time(current.frame.time) << " s)\n";
       }
     }
+    if (previous) last_interval = current.frame.time - previous->frame.time;
     previous = current;
   }
   if (!reader.error().empty()) throw std::runtime_error(reader.error());
@@ -171,7 +173,8 @@ RenderResult render_run(const RenderRequest& request, const Scene& scene,
 
   for (const Target& target : targets) {
     if (target.done) continue;
-    if (!first_and_last) {
+    // Within half a frame interval past the last frame, the last frame is the nearest one.
+    if (!first_and_last && target.time > previous->frame.time + 0.5 * last_interval) {
       result.notes.push_back("t = " + format_time(target.time) +
                              " s is after the run's last frame; drew that frame (t = " +
                              format_time(previous->frame.time) + " s)");

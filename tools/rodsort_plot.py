@@ -40,6 +40,10 @@ class PlotError(Exception):
     """A problem the user can act on: a missing file or column, a sweep that cannot give a plot."""
 
 
+class UsageError(PlotError):
+    """Arguments that cannot work, whatever the files hold (exit status 2, as rodsort's)."""
+
+
 def colour(index):
     return SPECIES_COLOURS[index % len(SPECIES_COLOURS)]
 
@@ -205,11 +209,11 @@ class Sweep:
         angles = table.numbers(self.angle_column)
         etas = table.numbers(self.eta_column)
         eps = table.numbers(self.eps_column) if self.eps_column else [None] * len(angles)
-        status = table.text("status") if table.has("status") else ["done"] * len(angles)
+        status = table.text("status") if table.has("status") else ["complete"] * len(angles)
         self.skipped = 0
         grouped = {}
         for angle, eta, noise, state in zip(angles, etas, eps, status):
-            if math.isnan(eta) or state not in ("done", "complete", "finished"):
+            if math.isnan(eta) or state != "complete":
                 self.skipped += 1
                 continue
             grouped.setdefault(noise, {}).setdefault(angle, []).append(eta)
@@ -425,15 +429,15 @@ def main(argv):
     paths = arguments.paths
     for path in paths:
         if not os.path.isdir(path):
-            raise PlotError(f"{path}: not a directory")
+            raise UsageError(f"{path}: not a directory")
     is_sweep = [os.path.isfile(os.path.join(p, "sweep.csv")) for p in paths]
     if any(is_sweep) and len(paths) > 1:
-        raise PlotError("give one sweep directory, or one or more run directories")
+        raise UsageError("give one sweep directory, or one or more run directories")
     sweep_mode = is_sweep[0]
     if not sweep_mode:
         for path in paths:
             if not os.path.isfile(os.path.join(path, "metrics.csv")):
-                raise PlotError(f"{path}: neither a run directory (metrics.csv) nor a sweep "
+                raise UsageError(f"{path}: neither a run directory (metrics.csv) nor a sweep "
                                 "directory (sweep.csv)")
     allowed = SWEEP_KINDS if sweep_mode else RUN_KINDS
     kinds = [k.strip() for k in arguments.what.split(",") if k.strip()]
@@ -442,7 +446,7 @@ def main(argv):
             other = RUN_KINDS if sweep_mode else SWEEP_KINDS
             hint = (f" ('{kind}' is drawn from a {'run' if sweep_mode else 'sweep'} directory)"
                     if kind in other else "")
-            raise PlotError(f"--what: unknown kind '{kind}' for a "
+            raise UsageError(f"--what: unknown kind '{kind}' for a "
                             f"{'sweep' if sweep_mode else 'run'} directory{hint}; "
                             f"expected some of: {', '.join(allowed)}")
     explicit = bool(kinds)
@@ -450,9 +454,9 @@ def main(argv):
     formats = [f.strip() for f in arguments.format.split(",") if f.strip()]
     for extension in formats:
         if extension not in ("png", "svg", "pdf"):
-            raise PlotError(f"--format: unknown format '{extension}'; expected png, svg or pdf")
+            raise UsageError(f"--format: unknown format '{extension}'; expected png, svg or pdf")
     if not arguments.tau > 0.0:
-        raise PlotError(f"--tau: must be positive, got {arguments.tau}")
+        raise UsageError(f"--tau: must be positive, got {arguments.tau}")
 
     out_dir = arguments.output or (os.path.join(paths[0], "plots") if len(paths) == 1
                                    else "plots")
@@ -472,7 +476,7 @@ def main(argv):
     if sweep_mode:
         sweep = Sweep(paths[0])
         if sweep.skipped:
-            print(f"note: {sweep.skipped} point(s) of {sweep.table.path} not finished or without "
+            print(f"note: {sweep.skipped} point(s) of {sweep.table.path} not complete or without "
                   "eta were left out", file=sys.stderr)
         write_critical_angles(sweep, out_dir, written)
         for kind in kinds:
@@ -510,4 +514,4 @@ if __name__ == "__main__":
         sys.exit(main(sys.argv[1:]))
     except PlotError as error:
         print(f"rodsort plot: error: {error}", file=sys.stderr)
-        sys.exit(1)
+        sys.exit(2 if isinstance(error, UsageError) else 1)

@@ -83,6 +83,11 @@ TEST_CASE("The plot script names a missing column", "[render][plot]") {
   CHECK(plotted.exit_status == 1);
   CHECK_THAT(plotted.output, Catch::Contains("metrics.csv: no column 'eta'") &&
                                  Catch::Contains("the columns are: t, n_rods"));
+  // A kind that is not drawn from a run directory is a usage error.
+  const render::ProgramOutput unknown =
+      render::run_plot_script({run.path().string(), "--what", "eta-theta"});
+  CHECK(unknown.exit_status == 2);
+  CHECK_THAT(unknown.output, Catch::Contains("'eta-theta' is drawn from a sweep directory"));
 }
 
 TEST_CASE("The plot script finds theta_c of a sweep as the metrics layer does", "[render][plot]") {
@@ -100,18 +105,19 @@ TEST_CASE("The plot script finds theta_c of a sweep as the metrics layer does", 
   for (std::size_t n = 0; n < noises.size(); ++n) {
     for (std::size_t a = 0; a < angles.size(); ++a) {
       for (const double offset : {-0.01, 0.01}) {
-        csv << "p" << point++ << ',' << angles[a] << ',' << noises[n] << ",1,done,"
+        csv << "p" << point++ << ',' << angles[a] << ',' << noises[n] << ",1,complete,"
             << etas[n][a] + offset << '\n';
       }
     }
   }
-  csv << "p" << point << ",150,0.01,1,failed,nan\n";
+  csv << "p" << point++ << ",150,0.01,1,failed,nan\n";
+  csv << "p" << point << ",160,0.01,1,running,0.01\n";
   csv.close();
 
   const render::ProgramOutput plotted = render::run_plot_script({sweep.path().string()});
   INFO(plotted.output);
   REQUIRE(plotted.exit_status == 0);
-  CHECK_THAT(plotted.output, Catch::Contains("1 point(s)"));
+  CHECK_THAT(plotted.output, Catch::Contains("2 point(s)"));
   check_png(sweep / "plots" / "eta-theta.png");
   check_png(sweep / "plots" / "thetac-eps.png");
 

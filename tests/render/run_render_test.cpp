@@ -69,13 +69,14 @@ TEST_CASE("Render draws the frames nearest the times asked, marking stationary r
   render::RenderRequest request;
   request.run_directory = run.path();
   request.output = run / "pictures";
-  request.times = {0.15, 0.1, 9.0, 0.14};
+  request.times = {0.15, 0.1, 9.0, 0.14, 0.38};
   request.svg = true;
   request.view.width_px = 400;
   const render::RenderResult result =
       render::render_run(request, test.scene, test.metrics_config());
-  // 0.1 -> 0.07 (0.03 away, 0.14 is 0.04 away); 0.14 and 0.15 -> 0.14, drawn once; 9 -> the last
-  // frame at 0.35 s, with a note. Each still has its SVG.
+  // 0.1 -> 0.07 (0.03 away, 0.14 is 0.04 away); 0.14 and 0.15 -> 0.14, drawn once; 0.38 -> the
+  // last frame at 0.35 s, its nearest; 9 -> the last frame too, with a note. Each still has its
+  // SVG.
   REQUIRE(result.written.size() == 6);
   CHECK(result.written[0] == run / "pictures" / "frame-t0.07.png");
   CHECK(result.written[1] == run / "pictures" / "frame-t0.07.svg");
