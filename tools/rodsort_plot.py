@@ -195,7 +195,8 @@ def swept_column(table, ending):
 
 
 class Sweep:
-    """sweep.csv: time-averaged eta per (eps, angle), averaged over seeds and repeated points."""
+    """sweep.csv: time-averaged eta against the angle, one curve per combination of the other
+    swept keys (seeds, and repeated points, averaged), as `rodsort summarize` groups them."""
 
     def __init__(self, sweep_dir):
         self.table = Table(os.path.join(sweep_dir, "sweep.csv"))
@@ -206,23 +207,31 @@ class Sweep:
                             f"the columns are: {', '.join(table.header)}")
         self.eps_column = swept_column(table, "kick_eps")
         self.eta_column = find_column(table, ("eta_mean", "eta"), "the time-averaged eta")
+        # The swept keys sit between `point` and `status`.
+        if table.has("point") and table.has("status"):
+            swept = table.header[table.header.index("point") + 1:table.header.index("status")]
+        else:
+            swept = [c for c in (self.angle_column, self.eps_column) if c]
+        self.other_columns = [c for c in swept if c not in (self.angle_column, "seed")]
+        if self.eps_column and self.eps_column not in self.other_columns:
+            self.other_columns.append(self.eps_column)
         angles = table.numbers(self.angle_column)
         etas = table.numbers(self.eta_column)
-        eps = table.numbers(self.eps_column) if self.eps_column else [None] * len(angles)
+        others = list(zip(*(table.text(c) for c in self.other_columns))) or [()] * len(angles)
         status = table.text("status") if table.has("status") else ["complete"] * len(angles)
         self.skipped = 0
         grouped = {}
-        for angle, eta, noise, state in zip(angles, etas, eps, status):
+        for angle, eta, key, state in zip(angles, etas, others, status):
             if math.isnan(eta) or state != "complete":
                 self.skipped += 1
                 continue
-            grouped.setdefault(noise, {}).setdefault(angle, []).append(eta)
+            grouped.setdefault(key, {}).setdefault(angle, []).append(eta)
         if not grouped:
-            raise PlotError(f"{table.path}: no finished point with a value of "
+            raise PlotError(f"{table.path}: no complete point with a value of "
                             f"'{self.eta_column}'")
-        # noise -> sorted [(angle, mean eta, standard error, samples)]
+        # key (values of other_columns) -> sorted [(angle, mean eta, standard error, samples)]
         self.curves = {}
-        for noise, by_angle in grouped.items():
+        for key, by_angle in grouped.items():
             curve = []
             for angle in sorted(by_angle):
                 values = by_angle[angle]
@@ -232,15 +241,38 @@ class Sweep:
                     variance = sum((v - mean) ** 2 for v in values) / (len(values) - 1)
                     spread = math.sqrt(variance / len(values))
                 curve.append((angle, mean, spread, len(values)))
-            self.curves[noise] = curve
+            self.curves[key] = curve
 
-    def noises(self):
-        return sorted(self.curves, key=lambda n: -math.inf if n is None else n)
+    def keys(self):
+        """The curves' keys, in numeric order of their values where they are numbers."""
+        def order(key):
+            return [(0, float(v), "") if is_number(v) else (1, 0.0, v) for v in key]
+        return sorted(self.curves, key=order)
+
+    def value(self, key, column):
+        return key[self.other_columns.index(column)]
+
+    def label(self, key):
+        parts = []
+        for column, value in zip(self.other_columns, key):
+            if column == self.eps_column:
+                parts.append(f"ε = {value} mm⁻¹")
+            else:
+                parts.append(f"{column} = {value}")
+        return ", ".join(parts) or "all points"
 
     def critical_angles(self):
-        """noise -> (theta_c dict or None, reason)."""
-        return {noise: critical_angle([(a, m) for a, m, _, _ in self.curves[noise]])
-                for noise in self.noises()}
+        """key -> (theta_c dict or None, reason)."""
+        return {key: critical_angle([(a, m) for a, m, _, _ in self.curves[key]])
+                for key in self.keys()}
+
+
+def is_number(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
 
 
 # ---------------------------------------------------------------------------------------------
@@ -342,18 +374,14 @@ def plot_dtheta(plt, runs, out_dir, formats, written, tau):
     save(plt, figure, out_dir, "dtheta", formats, written)
 
 
-def noise_label(sweep, noise):
-    return "all points" if noise is None else f"ε = {noise:g} mm⁻¹"
-
-
 def plot_eta_theta(plt, sweep, out_dir, formats, written):
     figure, axes = new_figure(plt)
     critical = sweep.critical_angles()
-    for index, noise in enumerate(sweep.noises()):
-        curve = sweep.curves[noise]
+    for index, key in enumerate(sweep.keys()):
+        curve = sweep.curves[key]
         line_colour = colour(index)
-        result, _ = critical[noise]
-        label = noise_label(sweep, noise)
+        result, _ = critical[key]
+        label = sweep.label(key)
         if result:
             label += f": θc = {result['angle']:.1f}°"
             axes.axvline(result["angle"], color=line_colour, linestyle=":", linewidth=1.0)
@@ -368,37 +396,52 @@ def plot_eta_theta(plt, sweep, out_dir, formats, written):
 
 
 def plot_thetac_eps(plt, sweep, out_dir, formats, written):
-    if sweep.eps_column is None or len(sweep.curves) < 2:
+    eps_values = {sweep.value(key, sweep.eps_column) for key in sweep.curves} \
+        if sweep.eps_column else set()
+    if len(eps_values) < 2:
         raise PlotError(f"{sweep.table.path}: theta_c against eps needs a sweep over "
                         "species[...].noise.kick_eps with at least two values")
-    found = [(noise, result) for noise, (result, _) in sweep.critical_angles().items() if result]
-    if not found:
+    # One line per combination of the swept keys other than eps.
+    families = {}
+    for key, (result, _) in sweep.critical_angles().items():
+        if not result:
+            continue
+        family = tuple(v for c, v in zip(sweep.other_columns, key) if c != sweep.eps_column)
+        families.setdefault(family, []).append((float(sweep.value(key, sweep.eps_column)), result))
+    if not families:
         raise PlotError(f"{sweep.table.path}: no noise level has a critical angle "
                         "(see theta_c.csv for why)")
+    family_columns = [c for c in sweep.other_columns if c != sweep.eps_column]
     figure, axes = new_figure(plt)
-    eps = [noise for noise, _ in found]
-    theta = [result["angle"] for _, result in found]
-    lower = [result["angle"] - result["below"] for _, result in found]
-    upper = [result["above"] - result["angle"] for _, result in found]
-    axes.errorbar(eps, theta, yerr=[lower, upper], color="black", marker="o", markersize=4,
-                  capsize=3, linewidth=1.2)
+    for index, (family, points) in enumerate(sorted(families.items())):
+        points.sort(key=lambda point: point[0])
+        theta = [result["angle"] for _, result in points]
+        lower = [result["angle"] - result["below"] for _, result in points]
+        upper = [result["above"] - result["angle"] for _, result in points]
+        label = ", ".join(f"{c} = {v}" for c, v in zip(family_columns, family)) or None
+        axes.errorbar([eps for eps, _ in points], theta, yerr=[lower, upper],
+                      color="black" if len(families) == 1 else colour(index), marker="o",
+                      markersize=4, capsize=3, linewidth=1.2, label=label)
     axes.set_xlabel(f"collision-kick noise ε [1/mm] ({sweep.eps_column})")
     axes.set_ylabel("critical angle θc [degrees]")
+    if len(families) > 1:
+        axes.legend(frameon=False, fontsize="small")
     save(plt, figure, out_dir, "thetac-eps", formats, written)
 
 
 def write_critical_angles(sweep, out_dir, written):
+    """theta_c.csv: one row per curve, its swept values, then theta_c and the bracketing angles
+    [degrees], the plateau eta, and why theta_c was not found when it was not."""
     path = os.path.join(out_dir, "theta_c.csv")
     with open(path, "w", newline="") as stream:
         writer = csv.writer(stream, lineterminator="\n")
-        writer.writerow(["kick_eps", "theta_c", "below", "above", "plateau", "reason"])
-        for noise, (result, reason) in sweep.critical_angles().items():
-            eps = "" if noise is None else f"{noise:.9g}"
+        writer.writerow(sweep.other_columns + ["theta_c", "below", "above", "plateau", "reason"])
+        for key, (result, reason) in sweep.critical_angles().items():
             if result:
-                writer.writerow([eps] + [f"{result[k]:.9g}" for k in
-                                         ("angle", "below", "above", "plateau")] + [""])
+                writer.writerow(list(key) + [f"{result[k]:.9g}" for k in
+                                             ("angle", "below", "above", "plateau")] + [""])
             else:
-                writer.writerow([eps, "nan", "nan", "nan", "nan", reason])
+                writer.writerow(list(key) + ["nan", "nan", "nan", "nan", reason])
     written.append(path)
 
 

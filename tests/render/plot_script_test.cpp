@@ -124,7 +124,7 @@ TEST_CASE("The plot script finds theta_c of a sweep as the metrics layer does", 
   std::ifstream theta_c(sweep / "plots" / "theta_c.csv");
   std::string line;
   std::getline(theta_c, line);
-  CHECK(line == "kick_eps,theta_c,below,above,plateau,reason");
+  CHECK(line == "species[0].noise.kick_eps,theta_c,below,above,plateau,reason");
   for (std::size_t n = 0; n < noises.size(); ++n) {
     std::vector<metrics::SweepPoint> points;
     for (std::size_t a = 0; a < angles.size(); ++a) points.push_back({angles[a], etas[n][a]});
