@@ -152,8 +152,8 @@ class RunSession {
         // Stop where a checkpoint continues the run exactly: at a frame (see run.hpp).
         if (schedule_.is_frame(step)) return stop_on_signal(signal_number, progress);
         if (!stop_announced) {
-          log("\nrodsort: got SIG%s; stopping at the next frame, t = %g s\n",
-              sigabbrev_np(signal_number),
+          log("%srodsort: got SIG%s; stopping at the next frame, t = %g s\n",
+              progress && terminal ? "\n" : "", sigabbrev_np(signal_number),
               plan_.model.dt *
                   static_cast<double>((step / schedule_.frame_steps + 1) * schedule_.frame_steps));
           stop_announced = true;
@@ -179,12 +179,13 @@ class RunSession {
 
   int stop_on_signal(int signal_number, std::optional<ProgressReporter>& progress) {
     if (last_checkpoint_step_ != simulation_.step_count()) write_checkpoint_now();
-    const std::string message = std::string("stopped by SIG") + sigabbrev_np(signal_number) +
-                                " at t = " + std::to_string(simulation_.time()) + " s";
+    char message[96];
+    std::snprintf(message, sizeof message, "stopped by SIG%s at t = %g s",
+                  sigabbrev_np(signal_number), simulation_.time());
     write_record(RunStatus::kInterrupted, message);
     if (progress) progress->finish(sample());
-    log("rodsort: %s; checkpoint written. Continue with: rodsort run --resume %s\n",
-        message.c_str(), directory_.c_str());
+    log("rodsort: %s; checkpoint written. Continue with: rodsort run --resume %s\n", message,
+        directory_.c_str());
     return kExitInterrupted;
   }
 
