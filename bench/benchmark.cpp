@@ -13,6 +13,17 @@
 #include "bench/standard_system.hpp"
 #include "engine/simulation.hpp"
 
+// Under valgrind --tool=callgrind --collect-atstart=no, only the measured steps are profiled; the
+// macros do nothing in a normal run.
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define RODSORT_PROFILE_START() CALLGRIND_START_INSTRUMENTATION; CALLGRIND_TOGGLE_COLLECT
+#define RODSORT_PROFILE_STOP() CALLGRIND_TOGGLE_COLLECT; CALLGRIND_STOP_INSTRUMENTATION
+#else
+#define RODSORT_PROFILE_START()
+#define RODSORT_PROFILE_STOP()
+#endif
+
 namespace rodsort::bench {
 namespace {
 
@@ -58,6 +69,10 @@ void add_options(CLI::App& app, Options& options) {
   app.add_option("--repeats", options.repeats, "measurements per system; the fastest is reported")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_option("--solver-iterations", options.solver_iterations,
+                 "iterations of Bullet's contact solver (the engine's default: 10)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--seed", options.seed, "seed of placement and noise")->capture_default_str();
   app.add_flag("--csv", options.csv, "print CSV instead of a table");
 }
@@ -74,12 +89,16 @@ Result run_system(const std::string& name, const Options& options) {
   result.dt = options.dt;
   result.steps = steps;
   for (int repeat = 0; repeat < options.repeats; ++repeat) {
-    engine::Simulation simulation(build_model(system, options.dt, options.seed));
+    engine::Model model = build_model(system, options.dt, options.seed);
+    model.solver_iterations = options.solver_iterations;
+    engine::Simulation simulation(std::move(model));
     simulation.advance(warmup_steps);
     const std::int64_t kicks_before = simulation.counters().kicks;
     const double cpu_start = process_cpu_seconds();
     const double wall_start = wall_seconds();
+    RODSORT_PROFILE_START();
     simulation.advance(steps);
+    RODSORT_PROFILE_STOP();
     const double cpu = process_cpu_seconds() - cpu_start;
     const double wall = wall_seconds() - wall_start;
     if (repeat == 0 || cpu < result.cpu_seconds) {

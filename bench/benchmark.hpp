@@ -23,6 +23,7 @@ struct Options {
   double simulated_time = 0.1;  ///< measured simulated time per system [s]
   double warmup = 0.05;         ///< simulated time before the measurement [s]
   int repeats = 1;              ///< measurements per system; the fastest is reported
+  int solver_iterations = 10;   ///< engine::Model::solver_iterations
   std::uint64_t seed = 1;
   bool csv = false;
 };

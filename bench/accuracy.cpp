@@ -1,0 +1,168 @@
+#include "bench/accuracy.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <ostream>
+
+#include "bench/benchmark.hpp"
+#include "engine/rod_shape.hpp"
+#include "engine/simulation.hpp"
+#include "engine/units.hpp"
+#include "metrics/single_rod.hpp"
+
+namespace rodsort::bench {
+namespace {
+
+/// The paper's frame interval [s].
+constexpr double kFrameInterval = 0.07;
+/// Lags of the D_r fit, in frame intervals.
+constexpr int kMinLag = 1, kMaxLag = 10;
+
+double process_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+/// One rod A at the centre of a 30 mm cell, the paper's drive.
+engine::Model single_rod(double dt, double kick_eps, int solver_iterations, std::uint64_t seed) {
+  engine::Model model;
+  model.solver_iterations = solver_iterations;
+  model.box_x = model.box_y = 30.0;
+  model.drive.frequency = 200.0;
+  model.drive.amplitude = engine::Drive::amplitude_from_gamma(7.0, 200.0);
+  model.drive.gap = 1.2;
+  model.dt = dt;
+  model.seed = seed;
+  engine::Species species;
+  species.name = "A";
+  species.shape = engine::make_rod_shape(engine::preset_a_profile(), kBrassDensity);
+  species.noise.kick_eps = kick_eps;
+  model.species.push_back(species);
+  model.rods.push_back({0, 15.0, 15.0, 0.0});
+  return model;
+}
+
+struct MeanAndError {
+  double mean, error;
+};
+
+MeanAndError mean_and_error(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  const double mean = sum / static_cast<double>(values.size());
+  if (values.size() < 2) return {mean, 0.0};
+  double squares = 0.0;
+  for (const double v : values) squares += (v - mean) * (v - mean);
+  const double n = static_cast<double>(values.size());
+  return {mean, std::sqrt(squares / (n - 1.0) / n)};
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+constexpr const char* kTableHeader =
+    "      dt   v0 [mm/s]        D_r [rad^2/s]    events/s  1 rod CPU-s/sim-s  319 rods "
+    "CPU-s/sim-s";
+constexpr const char* kCsvHeader =
+    "dt_s,v0_mm_s,v0_sem_mm_s,Dr_rad2_s,Dr_sem_rad2_s,events_per_s,single_cpu_s_per_simulated_s,"
+    "cpu_s_per_simulated_s_319";
+
+void write_row(std::ostream& out, const AccuracyResult& r, bool csv) {
+  if (csv) {
+    out << format("%.6g", r.dt) << ',' << format("%.4f", r.speed) << ','
+        << format("%.4f", r.speed_error) << ',' << format("%.4f", r.diffusion) << ','
+        << format("%.4f", r.diffusion_error) << ',' << format("%.1f", r.events_per_second) << ','
+        << format("%.5f", r.single_cpu_per_simulated) << ',' << format("%.4f", r.cost_319) << '\n';
+    return;
+  }
+  char line[160];
+  std::snprintf(line, sizeof line, "%8.3g %6.2f +- %4.2f   %5.3f +- %5.3f %11.0f %18.4f %20.3f",
+                r.dt, r.speed, r.speed_error, r.diffusion, r.diffusion_error, r.events_per_second,
+                r.single_cpu_per_simulated, r.cost_319);
+  out << line << '\n';
+}
+
+}  // namespace
+
+void add_accuracy_options(CLI::App& app, AccuracyOptions& options, bool& selected) {
+  app.add_flag("--accuracy", selected,
+               "measure single-rod speed and D_r against dt instead of the cost of the systems");
+  app.add_option("--dts", options.dts, "time steps of --accuracy [s]")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--rods", options.rods, "independent single rods per dt in --accuracy")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--seconds", options.seconds, "measured simulated time per rod in --accuracy [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--kick-eps", options.kick_eps, "collision kick in --accuracy [1/mm]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option(
+         "--cost-time", options.cost_time,
+         "simulated time of the 319-rod cost measurement per dt in --accuracy, 0 to skip [s]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+}
+
+AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
+  const std::int64_t steps_per_frame = std::llround(kFrameInterval / dt);
+  const int frame_count = static_cast<int>(std::lround(options.seconds / kFrameInterval)) + 1;
+  std::vector<double> speeds, diffusions;
+  double events = 0.0, cpu = 0.0, simulated = 0.0;
+  for (int rod = 0; rod < options.rods; ++rod) {
+    engine::Simulation simulation(single_rod(dt, options.kick_eps, options.solver_iterations,
+                                             options.seed + static_cast<std::uint64_t>(rod)));
+    simulation.advance(std::llround(options.warmup / dt));
+    const std::int64_t events_before = simulation.counters().kicks;
+    const double cpu_start = process_cpu_seconds();
+    std::vector<engine::Frame> frames{simulation.frame()};
+    for (int f = 1; f < frame_count; ++f) {
+      simulation.advance(steps_per_frame);
+      frames.push_back(simulation.frame());
+    }
+    cpu += process_cpu_seconds() - cpu_start;
+    const double elapsed = frames.back().time - frames.front().time;
+    simulated += elapsed;
+    events += static_cast<double>(simulation.counters().kicks - events_before);
+    speeds.push_back(metrics::mean_axial_speed(frames, {0}, 1));
+    diffusions.push_back(metrics::rotational_diffusion(frames, {0}, kMinLag, kMaxLag).coefficient);
+  }
+  AccuracyResult result;
+  result.dt = dt;
+  const MeanAndError speed = mean_and_error(speeds);
+  const MeanAndError diffusion = mean_and_error(diffusions);
+  result.speed = speed.mean;
+  result.speed_error = speed.error;
+  result.diffusion = diffusion.mean;
+  result.diffusion_error = diffusion.error;
+  result.events_per_second = events / simulated;
+  result.single_cpu_per_simulated = cpu / simulated;
+  if (options.cost_time > 0.0) {
+    Options cost;
+    cost.dt = dt;
+    cost.simulated_time = options.cost_time;
+    cost.seed = options.seed;
+    cost.solver_iterations = options.solver_iterations;
+    result.cost_319 = run_system("319", cost).cpu_per_simulated;
+  }
+  return result;
+}
+
+int run_accuracy(const AccuracyOptions& options, std::ostream& out) {
+  out << (options.csv ? kCsvHeader : kTableHeader) << '\n' << std::flush;
+  for (const double dt : options.dts) {
+    write_row(out, measure_accuracy(dt, options), options.csv);
+    out << std::flush;
+  }
+  return 0;
+}
+
+}  // namespace rodsort::bench
