@@ -34,6 +34,8 @@
 #include "engine/periodic_boundary.hpp"
 #include "engine/plate_drive.hpp"
 #include "engine/random_stream.hpp"
+#include "engine/rod_collision_dispatch.hpp"
+#include "engine/rod_geometry.hpp"
 #include "engine/units.hpp"
 
 namespace rodsort::engine {
@@ -76,12 +78,14 @@ struct Simulation::Impl {
   // Shapes outlive the world; one compound per species.
   std::vector<std::unique_ptr<btSphereShape>> sphere_shapes;
   std::vector<std::unique_ptr<btCompoundShape>> rod_shapes;
+  std::vector<std::unique_ptr<RodGeometry>> rod_geometries;  ///< user pointers of rod_shapes
   std::unique_ptr<btBoxShape> plate_shape;
   std::vector<std::unique_ptr<btBoxShape>> wall_shapes;
 
   // The world; rebuilt on restore.
   std::unique_ptr<btDefaultCollisionConfiguration> configuration;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<RodCollisionDispatch> rod_collision;
   std::unique_ptr<btDbvtBroadphase> broadphase;
   std::unique_ptr<PeriodicOverlapFilter> overlap_filter;
   std::unique_ptr<PeriodicContactSolver> solver;
@@ -134,6 +138,8 @@ struct Simulation::Impl {
         offset.setOrigin(btVector3(sphere.axial, 0, 0));
         compound->addChildShape(offset, child.get());
       }
+      compound->setUserPointer(
+          rod_geometries.emplace_back(std::make_unique<RodGeometry>(species.shape)).get());
       rod_shapes.push_back(std::move(compound));
     }
     const double overhang = 2.0 * largest_rod_reach(model) + kReachMargin;
@@ -187,8 +193,10 @@ struct Simulation::Impl {
       throw std::invalid_argument("state has " + std::to_string(state.rods.size()) +
                                   " rods, the model " + std::to_string(model.rods.size()));
     }
-    configuration = std::make_unique<btDefaultCollisionConfiguration>();
+    configuration = std::make_unique<btDefaultCollisionConfiguration>(
+        RodCollisionDispatch::configuration_info());
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
+    rod_collision = std::make_unique<RodCollisionDispatch>(*dispatcher);
     broadphase = std::make_unique<btDbvtBroadphase>();
     overlap_filter = std::make_unique<PeriodicOverlapFilter>();
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(overlap_filter.get());
@@ -312,6 +320,7 @@ struct Simulation::Impl {
     broadphase.reset();
     overlap_filter.reset();
     dispatcher.reset();
+    rod_collision.reset();
     configuration.reset();
   }
 

@@ -1,0 +1,57 @@
+#include "engine/rod_collision_dispatch.hpp"
+
+#include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/BroadphaseCollision/btDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
+
+#include <algorithm>
+#include <new>
+
+#include "engine/body_tag.hpp"
+#include "engine/rod_plate_collision.hpp"
+#include "engine/rod_rod_collision.hpp"
+#include "engine/rod_wall_collision.hpp"
+
+namespace rodsort::engine {
+
+btDefaultCollisionConstructionInfo RodCollisionDispatch::configuration_info() {
+  btDefaultCollisionConstructionInfo info;
+  // Bullet's pool hands out fixed-size elements and does not check the size asked for.
+  info.m_customCollisionAlgorithmMaxElementSize = static_cast<int>(
+      std::max({sizeof(RodPlateCollision), sizeof(RodRodCollision), sizeof(RodWallCollision)}));
+  return info;
+}
+
+RodCollisionDispatch::RodCollisionDispatch(btCollisionDispatcher& dispatcher) {
+  rod_box_.rod_is_body0 = true;
+  box_rod_.rod_is_body0 = false;
+  dispatcher.registerCollisionCreateFunc(COMPOUND_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, &rod_box_);
+  dispatcher.registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, COMPOUND_SHAPE_PROXYTYPE, &box_rod_);
+  dispatcher.registerCollisionCreateFunc(COMPOUND_SHAPE_PROXYTYPE, COMPOUND_SHAPE_PROXYTYPE,
+                                         &rod_rod_);
+}
+
+btCollisionAlgorithm* RodCollisionDispatch::RodBox::CreateCollisionAlgorithm(
+    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
+    const btCollisionObjectWrapper* body1) {
+  const btCollisionObjectWrapper* rod = rod_is_body0 ? body0 : body1;
+  const btCollisionObjectWrapper* box = rod_is_body0 ? body1 : body0;
+  const auto* tag = static_cast<const BodyTag*>(box->getCollisionObject()->getUserPointer());
+  if (tag->kind == BodyKind::kWall) {
+    void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodWallCollision));
+    return new (memory) RodWallCollision(info, rod, box, rod_is_body0);
+  }
+  void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodPlateCollision));
+  return new (memory) RodPlateCollision(info, rod, rod_is_body0);
+}
+
+btCollisionAlgorithm* RodCollisionDispatch::RodRod::CreateCollisionAlgorithm(
+    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* /*body0*/,
+    const btCollisionObjectWrapper* /*body1*/) {
+  void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodRodCollision));
+  return new (memory) RodRodCollision(info);
+}
+
+}  // namespace rodsort::engine

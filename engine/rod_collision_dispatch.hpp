@@ -1,0 +1,44 @@
+#pragma once
+// Wires the rod collision algorithms into Bullet's dispatcher in place of its generic compound
+// algorithms: rod-plate pairs get RodPlateCollision, rod-wall pairs RodWallCollision, rod-rod and
+// rod-image pairs RodRodCollision. Every compound in a simulation is a rod, every box a plate or a
+// wall.
+
+#include <BulletCollision/CollisionDispatch/btCollisionCreateFunc.h>
+#include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
+
+class btCollisionDispatcher;
+
+namespace rodsort::engine {
+
+class RodCollisionDispatch {
+ public:
+  /// Construction info for the world's btDefaultCollisionConfiguration: its algorithm pool must
+  /// hold the rod algorithms too.
+  static btDefaultCollisionConstructionInfo configuration_info();
+
+  /// Registers the algorithms with `dispatcher`; this object must outlive the dispatcher's use.
+  explicit RodCollisionDispatch(btCollisionDispatcher& dispatcher);
+
+  RodCollisionDispatch(const RodCollisionDispatch&) = delete;
+  RodCollisionDispatch& operator=(const RodCollisionDispatch&) = delete;
+
+ private:
+  /// A rod (compound) against a box: a plate or a wall, told apart by the box's BodyTag.
+  struct RodBox : btCollisionAlgorithmCreateFunc {
+    bool rod_is_body0 = true;
+    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                   const btCollisionObjectWrapper* body0,
+                                                   const btCollisionObjectWrapper* body1) override;
+  };
+  struct RodRod : btCollisionAlgorithmCreateFunc {
+    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                   const btCollisionObjectWrapper* body0,
+                                                   const btCollisionObjectWrapper* body1) override;
+  };
+
+  RodBox rod_box_, box_rod_;
+  RodRod rod_rod_;
+};
+
+}  // namespace rodsort::engine

@@ -1,0 +1,34 @@
+#include "engine/rod_geometry.hpp"
+
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace rodsort::engine {
+
+RodGeometry::RodGeometry(const RodShape& shape) {
+  assert(!shape.spheres.empty());
+  axial_min = shape.spheres.front().axial;
+  axial_max = axial_min;
+  for (const Sphere& sphere : shape.spheres) {
+    axial.push_back(sphere.axial);
+    radius.push_back(sphere.radius);
+    max_radius = std::max(max_radius, sphere.radius);
+    axial_min = std::min(axial_min, sphere.axial);
+    axial_max = std::max(axial_max, sphere.axial);
+  }
+  axial_center = 0.5 * (axial_min + axial_max);
+  for (const Sphere& sphere : shape.spheres) {
+    bounding_radius =
+        std::max(bounding_radius, std::abs(sphere.axial - axial_center) + sphere.radius);
+  }
+}
+
+const RodGeometry& RodGeometry::of(const btCollisionShape& shape) {
+  assert(shape.getUserPointer() != nullptr);
+  return *static_cast<const RodGeometry*>(shape.getUserPointer());
+}
+
+}  // namespace rodsort::engine

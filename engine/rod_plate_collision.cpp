@@ -1,0 +1,106 @@
+// Rod-plate contacts, the bulk of all collision work: every rod meets the base and usually the lid
+// at every step.
+//
+// Bullet's generic path for a compound of spheres against a box runs, for each of the rod's
+// spheres, a transform product, two AABB computations and, for a sphere touching the plate, a GJK
+// closest-point search. Against a horizontal slab all of it reduces to one number per sphere: the
+// height of its lowest (base) or highest (lid) point above or below the plate's surface.
+//
+// The contacts are those Bullet's compound algorithm makes, so the physics does not change: a
+// sphere has a contact exactly when it reaches the plate's surface (where its AABB starts to
+// overlap the plate's), the point lies on the surface under the sphere's centre, the normal is
+// vertical, and each touching sphere keeps its own persistent manifold, refreshed and merged by
+// Bullet's own btManifoldResult, so that contacts persist and warm-start as before. A manifold
+// holds at most four points and a rod lying on its side touches with all of its spheres (their
+// envelope is a cone, tangent to the plate along a line), hence one manifold per sphere rather than
+// one per rod.
+#include "engine/rod_plate_collision.hpp"
+
+#include <BulletCollision/BroadphaseCollision/btDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+
+#include "engine/body_tag.hpp"
+#include "engine/rod_geometry.hpp"
+
+namespace rodsort::engine {
+
+RodPlateCollision::RodPlateCollision(const btCollisionAlgorithmConstructionInfo& info,
+                                     const btCollisionObjectWrapper* rod, bool rod_is_body0)
+    : btCollisionAlgorithm(info),
+      rod_is_body0_(rod_is_body0),
+      manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr) {}
+
+RodPlateCollision::~RodPlateCollision() {
+  for (btPersistentManifold* manifold : manifolds_) {
+    if (manifold) m_dispatcher->releaseManifold(manifold);
+  }
+}
+
+void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
+                                         const btCollisionObjectWrapper* body1,
+                                         const btDispatcherInfo& /*dispatch_info*/,
+                                         btManifoldResult* result) {
+  const btCollisionObjectWrapper* rod = rod_is_body0_ ? body0 : body1;
+  const btCollisionObjectWrapper* plate = rod_is_body0_ ? body1 : body0;
+  const RodGeometry& geometry = RodGeometry::of(*rod->getCollisionShape());
+  const btTransform& pose = rod->getWorldTransform();
+  const btVector3 axis = pose.getBasis().getColumn(0);
+
+  const auto* tag = static_cast<const BodyTag*>(plate->getCollisionObject()->getUserPointer());
+  const bool base = tag->kind == BodyKind::kBase;
+  const double half_thickness =
+      static_cast<const btBoxShape*>(plate->getCollisionShape())->getHalfExtentsWithMargin().z();
+  const double plate_z = plate->getWorldTransform().getOrigin().z();
+  const double surface = base ? plate_z + half_thickness : plate_z - half_thickness;
+  // The normal on the plate (body B of every manifold here), pointing toward the rod.
+  const btVector3 normal(0.0, 0.0, base ? 1.0 : -1.0);
+
+  for (std::size_t i = 0; i < manifolds_.size(); ++i) {
+    // pose * (axial, 0, 0), written out.
+    const btVector3 center = axis * geometry.axial[i] + pose.getOrigin();
+    const double r = geometry.radius[i];
+    const double depth = base ? (center.z() - r) - surface : surface - (center.z() + r);
+    btPersistentManifold*& manifold = manifolds_[i];
+    if (depth > 0.0) continue;
+    if (!manifold) {
+      manifold =
+          m_dispatcher->getNewManifold(rod->getCollisionObject(), plate->getCollisionObject());
+    }
+    if (rod_is_body0_) {
+      result->setShapeIdentifiersA(-1, static_cast<int>(i));
+    } else {
+      result->setShapeIdentifiersB(-1, static_cast<int>(i));
+    }
+    result->setPersistentManifold(manifold);
+    result->refreshContactPoints();
+    result->addContactPoint(normal, btVector3(center.x(), center.y(), surface), depth);
+    result->refreshContactPoints();
+  }
+  // Manifolds of spheres that left the plate go only after the new ones were made, as with
+  // Bullet's compound algorithm: the dispatcher's list, and so the order in which the solver meets
+  // the contacts, stays the same. It matters: with ten solver iterations the contacts of a rod
+  // landing on several spheres at once are not converged, and releasing first (which reorders the
+  // list) moved a single rod's mean speed by 8% at dt = 1e-4 s.
+  for (std::size_t i = 0; i < manifolds_.size(); ++i) {
+    btPersistentManifold*& manifold = manifolds_[i];
+    if (!manifold) continue;
+    const double center_z = axis.z() * geometry.axial[i] + pose.getOrigin().z();
+    const double r = geometry.radius[i];
+    const double depth = base ? (center_z - r) - surface : surface - (center_z + r);
+    if (depth > 0.0) {
+      m_dispatcher->releaseManifold(manifold);
+      manifold = nullptr;
+    }
+  }
+}
+
+void RodPlateCollision::getAllContactManifolds(btManifoldArray& manifolds) {
+  for (btPersistentManifold* manifold : manifolds_) {
+    if (manifold) manifolds.push_back(manifold);
+  }
+}
+
+}  // namespace rodsort::engine

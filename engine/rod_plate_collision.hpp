@@ -1,0 +1,33 @@
+#pragma once
+
+#include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
+
+#include <vector>
+
+class btPersistentManifold;
+
+namespace rodsort::engine {
+
+/// Contacts of a rod (a compound of spheres) with the base or the lid (horizontal slabs), computed
+/// analytically; see rod_plate_collision.cpp.
+class RodPlateCollision : public btCollisionAlgorithm {
+ public:
+  RodPlateCollision(const btCollisionAlgorithmConstructionInfo& info,
+                    const btCollisionObjectWrapper* rod, bool rod_is_body0);
+  ~RodPlateCollision() override;
+
+  void processCollision(const btCollisionObjectWrapper* body0,
+                        const btCollisionObjectWrapper* body1,
+                        const btDispatcherInfo& dispatch_info, btManifoldResult* result) override;
+  btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
+                                 btManifoldResult*) override {
+    return 1.0;
+  }
+  void getAllContactManifolds(btManifoldArray& manifolds) override;
+
+ private:
+  bool rod_is_body0_;
+  std::vector<btPersistentManifold*> manifolds_;  ///< one per sphere, null while it is clear
+};
+
+}  // namespace rodsort::engine

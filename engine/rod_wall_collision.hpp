@@ -1,0 +1,37 @@
+#pragma once
+
+#include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
+
+#include <vector>
+
+class btPersistentManifold;
+
+namespace rodsort::engine {
+
+/// Contacts of a rod (a compound of spheres) with a static wall (any box), sphere by sphere in
+/// the box's frame; see rod_wall_collision.cpp.
+class RodWallCollision : public btCollisionAlgorithm {
+ public:
+  RodWallCollision(const btCollisionAlgorithmConstructionInfo& info,
+                   const btCollisionObjectWrapper* rod, const btCollisionObjectWrapper* wall,
+                   bool rod_is_body0);
+  ~RodWallCollision() override;
+
+  void processCollision(const btCollisionObjectWrapper* body0,
+                        const btCollisionObjectWrapper* body1,
+                        const btDispatcherInfo& dispatch_info, btManifoldResult* result) override;
+  btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
+                                 btManifoldResult*) override {
+    return 1.0;
+  }
+  void getAllContactManifolds(btManifoldArray& manifolds) override;
+
+ private:
+  void release(btPersistentManifold*& manifold);
+
+  bool rod_is_body0_;
+  double breaking_threshold_;  ///< of the manifolds Bullet makes for this pair [mm]
+  std::vector<btPersistentManifold*> manifolds_;  ///< one per sphere, null while it is far
+};
+
+}  // namespace rodsort::engine
