@@ -36,6 +36,7 @@
 #include "engine/random_stream.hpp"
 #include "engine/rod_collision_dispatch.hpp"
 #include "engine/rod_geometry.hpp"
+#include "engine/rod_world.hpp"
 #include "engine/units.hpp"
 
 namespace rodsort::engine {
@@ -201,10 +202,13 @@ struct Simulation::Impl {
     overlap_filter = std::make_unique<PeriodicOverlapFilter>();
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(overlap_filter.get());
     solver = std::make_unique<PeriodicContactSolver>(cell, rods);
-    world = std::make_unique<btDiscreteDynamicsWorld>(dispatcher.get(), broadphase.get(),
-                                                      solver.get(), configuration.get());
+    world = std::make_unique<RodWorld>(dispatcher.get(), broadphase.get(), solver.get(),
+                                       configuration.get());
     world->setGravity(btVector3(0, 0, -kGravity));
     world->getSimulationIslandManager()->setSplitIslands(false);
+    // No continuous collision detection (DESIGN.md): this also keeps Bullet from widening each
+    // rod's broadphase box by its predicted motion (see rod_world.cpp).
+    world->getDispatchInfo().m_useContinuous = false;
     btContactSolverInfo& info = world->getSolverInfo();
     info.m_numIterations = model.solver_iterations;
     // Two friction directions per contact: with Bullet's default single direction (along the
