@@ -156,7 +156,7 @@ TEST_CASE("without a trap, count auto takes an area fraction", "[scenario]") {
   CHECK(static_cast<long>(scenario.model.rods.size()) == std::lround(0.1 * 86.85 * 86.85 / a));
 }
 
-TEST_CASE("--set overrides values before they are checked", "[scenario][override]") {
+TEST_CASE("overrides given with --set apply before the checks", "[scenario][override]") {
   const std::string base = "name: base\ntrap: {angle: 120}\n";
   SECTION("a value, a new section, and an item of the default species list") {
     const Scenario scenario =
