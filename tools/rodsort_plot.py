@@ -348,26 +348,35 @@ def plot_population(plt, runs, out_dir, formats, written):
     save(plt, figure, out_dir, "population", formats, written)
 
 
+# Half-widths of the P(dtheta) axis [degrees]: the smallest that holds every change is used, so
+# that the narrow distributions of trapped rods are not squeezed into a few bins.
+DTHETA_RANGES = (10, 20, 30, 45, 60, 90, 120, 180)
+DTHETA_BINS = 120
+
+
 def plot_dtheta(plt, runs, out_dir, formats, written, tau):
-    figure, axes = new_figure(plt)
-    several = len(runs) > 1
-    edges = [-180.0 + 2.0 * k for k in range(181)]
+    lines = []  # (label, colour, values)
     spans = set()
+    several = len(runs) > 1
     for index, run_dir in enumerate(runs):
-        changes, lag, span = orientation_changes(run_dir, tau)
+        changes, _, span = orientation_changes(run_dir, tau)
         spans.add(round(span, 6))
-        species = sorted(changes)
-        for s, name in enumerate(species):
-            values = changes[name]
+        # Species in the order of their first rod, which is their index order in rods.csv.
+        for s, name in enumerate(changes):
             label = run_label(run_dir) if several else name
-            if several and len(species) > 1:
+            if several and len(changes) > 1:
                 label = f"{run_label(run_dir)}: {name}"
-            axes.hist(values, bins=edges, density=True, histtype="step", linewidth=1.2,
-                      color=colour(index if several else s), label=label)
+            lines.append((label, colour(index if several else s), changes[name]))
+    largest = max((abs(v) for _, _, values in lines for v in values), default=0.0)
+    half_width = next((r for r in DTHETA_RANGES if largest <= r), 180)
+    edges = [-half_width + 2.0 * half_width * k / DTHETA_BINS for k in range(DTHETA_BINS + 1)]
+    figure, axes = new_figure(plt)
+    for label, line_colour, values in lines:
+        axes.hist(values, bins=edges, density=True, histtype="step", linewidth=1.2,
+                  color=line_colour, label=label)
     span_text = ", ".join(f"{span:g}" for span in sorted(spans))
     axes.set_yscale("log")
-    axes.set_xlim(-180.0, 180.0)
-    axes.set_xticks(range(-180, 181, 60))
+    axes.set_xlim(-half_width, half_width)
     axes.set_xlabel(f"Δθ over {span_text} s [degrees]")
     axes.set_ylabel("P(Δθ) [1/degree]")
     axes.legend(frameon=False, fontsize="small")
