@@ -1,9 +1,8 @@
 // A btDiscreteDynamicsWorld that skips what the simulation never uses.
 //
-// Every step of Bullet's world makes about a dozen passes over all bodies. With a few thousand rods
-// the bodies no longer fit in the processor's caches, and each pass costs a trip to memory for
-// every rod: some of these passes do nothing here, and skipping them is most of what keeps the cost
-// per rod flat as the system grows. What is skipped, and why it changes nothing:
+// Every step of Bullet's world makes about a dozen passes over all bodies, and with a few thousand
+// rods each pass costs a trip to memory for every rod. Some of these passes do nothing here. What
+// is skipped, and why it changes nothing:
 //  - predictUnconstraintMotion: damps velocities (rods have no damping) and predicts each body's
 //    transform at the end of the step into its interpolation transform. The prediction is only
 //    used for continuous collision detection (off: DESIGN.md) and to widen the body's broadphase
@@ -12,11 +11,11 @@
 //    step, and the broadphase box is that of the pose.
 //  - createPredictiveContacts: computes, for every body, the same prediction again, for
 //    continuous collision detection only.
-//  - calculateSimulationIslands, and the island building in solveConstraints: simulation islands
-//    serve deactivation (disabled for every body) and splitting the solver's work by island (the
-//    engine solves everything as one island: see periodic_boundary.cpp). The solver gets what
-//    Bullet hands it without split islands: every collision object, every manifold, in Bullet's
-//    order.
+//  - calculateSimulationIslands, and the island building in solveConstraints: Bullet's simulation
+//    islands serve deactivation (disabled for every body) and splitting the solver's work by
+//    island, which Bullet cannot do right across periodic images (periodic_boundary.cpp). The
+//    engine makes its own islands, which know the images, and hands them to the solver batch by
+//    batch (solver_batches.cpp), with the same result as one call with everything.
 //  - updateActivationState and synchronizeMotionStates: deactivation is disabled for every body,
 //    and no body has a motion state.
 #include "engine/rod_world.hpp"
@@ -33,14 +32,17 @@ void RodWorld::createPredictiveContacts(btScalar /*time_step*/) {}
 void RodWorld::calculateSimulationIslands() {}
 
 void RodWorld::solveConstraints(btContactSolverInfo& solver_info) {
-  btCollisionObjectArray& objects = getCollisionObjectArray();
   btDispatcher* dispatcher = getDispatcher();
   const int manifold_count = dispatcher->getNumManifolds();
-  m_constraintSolver->prepareSolve(objects.size(), manifold_count);
-  m_constraintSolver->solveGroup(
-      objects.size() > 0 ? &objects[0] : nullptr, objects.size(),
-      manifold_count > 0 ? dispatcher->getInternalManifoldPointer() : nullptr, manifold_count,
-      nullptr, 0, solver_info, getDebugDrawer(), dispatcher);
+  batches_.build(m_nonStaticRigidBodies,
+                 manifold_count > 0 ? dispatcher->getInternalManifoldPointer() : nullptr,
+                 manifold_count);
+  m_constraintSolver->prepareSolve(getNumCollisionObjects(), manifold_count);
+  for (int b = 0; b < batches_.size(); ++b) {
+    m_constraintSolver->solveGroup(batches_.bodies(b), batches_.body_count(b),
+                                   batches_.manifolds(b), batches_.manifold_count(b), nullptr, 0,
+                                   solver_info, getDebugDrawer(), dispatcher);
+  }
   m_constraintSolver->allSolved(solver_info, getDebugDrawer());
 }
 

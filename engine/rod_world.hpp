@@ -2,6 +2,8 @@
 
 #include <BulletDynamics/Dynamics/btDiscreteDynamicsWorld.h>
 
+#include "engine/solver_batches.hpp"
+
 namespace rodsort::engine {
 
 /// Bullet's discrete dynamics world without the per-body passes this engine never needs; see
@@ -19,6 +21,9 @@ class RodWorld : public btDiscreteDynamicsWorld {
 
  public:
   void synchronizeMotionStates() override;
+
+ private:
+  SolverBatches batches_;
 };
 
 }  // namespace rodsort::engine
