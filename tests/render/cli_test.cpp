@@ -9,13 +9,13 @@
 #include "render/plot_script.hpp"
 #include "render/png_pixels.hpp"
 #include "render/scene.hpp"
-#include "render/temp_directory.hpp"
+#include "support/temp_directory.hpp"
 #include "render/top_view.hpp"
 #include "scenarios/scenario.hpp"
 
 using namespace rodsort;
 using render::testing::PngPixels;
-using render::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 namespace {
 

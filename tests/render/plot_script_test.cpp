@@ -9,12 +9,12 @@
 #include "metrics/metrics_observer.hpp"
 #include "render/png_pixels.hpp"
 #include "render/synthetic_run.hpp"
-#include "render/temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort;
 using render::testing::kFrameInterval;
 using render::testing::PngPixels;
-using render::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 using render::testing::TestScene;
 
 namespace {

@@ -8,12 +8,12 @@
 #include "render/external_program.hpp"
 #include "render/png_pixels.hpp"
 #include "render/synthetic_run.hpp"
-#include "render/temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort;
 using render::testing::kFrameInterval;
 using render::testing::PngPixels;
-using render::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 using render::testing::TestScene;
 using render::testing::write_test_run;
 

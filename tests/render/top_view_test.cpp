@@ -7,13 +7,13 @@
 
 #include "render/png_pixels.hpp"
 #include "render/synthetic_run.hpp"
-#include "render/temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort;
 using render::testing::kBoxX;
 using render::testing::kBoxY;
 using render::testing::PngPixels;
-using render::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 using render::testing::test_frame;
 using render::testing::test_marks;
 using render::testing::TestScene;

@@ -4,11 +4,11 @@
 #include <fstream>
 
 #include "runner/atomic_file.hpp"
-#include "temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort;
 using runner::Checkpoint;
-using runner::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 namespace {
 

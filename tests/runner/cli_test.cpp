@@ -13,11 +13,11 @@
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/run_record.hpp"
-#include "temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort::runner;
 using rodsort::runner::testing::run_rodsort;
-using rodsort::runner::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 namespace {
 

@@ -5,10 +5,10 @@
 #include "runner/append_file.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/run_directory.hpp"
-#include "temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort::runner;
-using rodsort::runner::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 TEST_CASE("an atomic write replaces the whole file and leaves no temporary", "[runner][files]") {
   TempDirectory directory;

@@ -6,10 +6,10 @@
 
 #include "runner/atomic_file.hpp"
 #include "runner/interrupt.hpp"
-#include "temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort::runner;
-using rodsort::runner::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 TEST_CASE("jobs run with their exit status and their output in their log",
           "[runner][process_pool]") {

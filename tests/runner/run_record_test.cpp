@@ -3,10 +3,10 @@
 #include <catch2/catch.hpp>
 
 #include "runner/json_text.hpp"
-#include "temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort::runner;
-using rodsort::runner::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 TEST_CASE("a run record survives its JSON text", "[runner][run_record]") {
   RunRecord record;

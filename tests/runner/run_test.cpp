@@ -15,10 +15,10 @@
 #include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
 #include "scenarios/scenario.hpp"
-#include "temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort::runner;
-using rodsort::runner::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 namespace {
 

@@ -10,10 +10,10 @@
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/summarize.hpp"
-#include "temp_directory.hpp"
+#include "support/temp_directory.hpp"
 
 using namespace rodsort::runner;
-using rodsort::runner::testing::TempDirectory;
+using rodsort::testing::TempDirectory;
 
 namespace {
 

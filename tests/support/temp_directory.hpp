@@ -7,13 +7,12 @@
 #include <stdexcept>
 #include <string>
 
-namespace rodsort::render::testing {
+namespace rodsort::testing {
 
 class TempDirectory {
  public:
   TempDirectory() {
-    std::string pattern =
-        (std::filesystem::temp_directory_path() / "rodsort-render-XXXXXX").string();
+    std::string pattern = (std::filesystem::temp_directory_path() / "rodsort-test-XXXXXX").string();
     if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
     path_ = pattern;
   }
@@ -31,4 +30,4 @@ class TempDirectory {
   std::filesystem::path path_;
 };
 
-}  // namespace rodsort::render::testing
+}  // namespace rodsort::testing
