@@ -27,6 +27,11 @@ class PeriodicCell {
 
   /// Whether the image of a rod centred at (x, y) (wrapped) under shift `index` can touch a rod.
   bool image_needed(double x, double y, int index) const;
+  /// False when a rod centred at (x, y) (wrapped) needs no image at all: it is farther than the
+  /// reach from every edge.
+  bool near_edge(double x, double y) const {
+    return x < reach_ || x > box_x_ - reach_ || y < reach_ || y > box_y_ - reach_;
+  }
 
   /// Number of cells to subtract along x and y to bring (x, y) into the cell.
   std::array<std::int64_t, 2> wrap_count(double x, double y) const;

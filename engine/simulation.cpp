@@ -344,9 +344,11 @@ struct Simulation::Impl {
         image_count[i][0] += crossed[0];
         image_count[i][1] += crossed[1];
       }
+      const bool near_edge = cell.near_edge(transform.getOrigin().x(), transform.getOrigin().y());
       for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
         const std::size_t k = i * PeriodicCell::kShiftCount + static_cast<std::size_t>(s);
-        const bool needed = cell.image_needed(transform.getOrigin().x(), transform.getOrigin().y(), s);
+        const bool needed =
+            near_edge && cell.image_needed(transform.getOrigin().x(), transform.getOrigin().y(), s);
         btCollisionObject& image = *images[k];
         if (needed) {
           btTransform shifted = transform;
