@@ -16,8 +16,9 @@
 //     contact point on that side is moved back by -S. The solver then sees exactly the contact it
 //     would see if the two rods met in the middle of the cell, and a collision across an edge or a
 //     corner gives the same outcome as one in the interior (to round-off).
-// The world must be created with setSplitIslands(false): otherwise a rod touching another through
-// an image can land in two islands and receive gravity twice.
+// Bullet's own islands must not split the solver's work: a rod touching another through an image
+// could land in two islands and receive gravity twice. The engine groups rods into islands itself,
+// linking each image with its real rod (solver_batches.cpp).
 #include "engine/periodic_boundary.hpp"
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
