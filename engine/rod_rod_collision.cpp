@@ -27,6 +27,7 @@
 #include <algorithm>
 
 #include "engine/rod_geometry.hpp"
+#include "engine/segment_distance.hpp"
 
 namespace rodsort::engine {
 namespace {
@@ -35,36 +36,6 @@ namespace {
 /// this factor times the squared contact distance, plus this area [mm^2].
 constexpr double kClearlyApart = 1.0 + 1e-9;
 constexpr double kRoundingArea = 1e-12;
-
-/// Squared distance between the segments [p0, p1] and [q0, q1] (Ericson, Real-Time Collision
-/// Detection, 5.1.9).
-double segment_distance_squared(const btVector3& p0, const btVector3& p1, const btVector3& q0,
-                                const btVector3& q1) {
-  const btVector3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const double a = d1.length2(), e = d2.length2(), f = d2.dot(r);
-  double s = 0.0, t = 0.0;
-  if (a <= SIMD_EPSILON && e <= SIMD_EPSILON) return r.length2();
-  if (a <= SIMD_EPSILON) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = d1.dot(r);
-    if (e <= SIMD_EPSILON) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double b = d1.dot(d2), denominator = a * e - b * b;
-      s = denominator > 0.0 ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0.0) {
-        t = 0.0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1.0) {
-        t = 1.0;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  return ((p0 + d1 * s) - (q0 + d2 * t)).length2();
-}
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/random_stream.hpp"
+#include "engine/segment_distance.hpp"
 #include "engine/units.hpp"
 #include "trap/obstacle.hpp"
 
@@ -97,38 +98,7 @@ std::vector<int> drawing_order(const std::vector<SpeciesPlacement>& species) {
 
 double segment_distance(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1,
                         const Eigen::Vector2d& q0, const Eigen::Vector2d& q1) {
-  // Closest points of two segments (Ericson, Real-Time Collision Detection, 5.1.9).
-  const Eigen::Vector2d d1 = p1 - p0;
-  const Eigen::Vector2d d2 = q1 - q0;
-  const Eigen::Vector2d r = p0 - q0;
-  const double a = d1.squaredNorm();
-  const double e = d2.squaredNorm();
-  const double f = d2.dot(r);
-  constexpr double kTiny = 1e-300;
-  double s = 0.0;
-  double t = 0.0;
-  if (a <= kTiny && e <= kTiny) return r.norm();
-  if (a <= kTiny) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = d1.dot(r);
-    if (e <= kTiny) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double b = d1.dot(d2);
-      const double denominator = a * e - b * b;
-      s = denominator > kTiny ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0.0) {
-        t = 0.0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1.0) {
-        t = 1.0;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  return ((p0 + s * d1) - (q0 + t * d2)).norm();
+  return std::sqrt(engine::segment_distance_squared(p0, p1, q0, q1));
 }
 
 PlacementResult place_rods(const PlacementCell& cell, const std::vector<SpeciesPlacement>& species,
