@@ -30,9 +30,7 @@ engine::Model single_rod(double dt, double kick_eps, int solver_iterations, std:
   engine::Model model;
   model.solver_iterations = solver_iterations;
   model.box_x = model.box_y = 30.0;
-  model.drive.frequency = 200.0;
-  model.drive.amplitude = engine::Drive::amplitude_from_gamma(7.0, 200.0);
-  model.drive.gap = 1.2;
+  model.drive = engine::Drive::paper();
   model.dt = dt;
   model.seed = seed;
   engine::Species species;

@@ -34,9 +34,7 @@ engine::Model build_model(const SystemSpec& system, double dt, std::uint64_t see
   engine::Model model;
   model.box_x = system.box;
   model.box_y = system.box;
-  model.drive.frequency = 200.0;
-  model.drive.amplitude = engine::Drive::amplitude_from_gamma(7.0, 200.0);
-  model.drive.gap = 1.2;
+  model.drive = engine::Drive::paper();
   model.dt = dt;
   model.seed = seed;
 

@@ -19,6 +19,8 @@ struct Drive {
 
   /// Amplitude from the dimensionless acceleration Gamma = A (2 pi f)^2 / g.
   static double amplitude_from_gamma(double gamma, double frequency);
+  /// The paper's drive: f = 200 Hz, Gamma = 7, w = 1.2 mm.
+  static Drive paper();
   double gamma() const;
 };
 

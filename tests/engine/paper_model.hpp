@@ -19,14 +19,12 @@ inline Species rod_species(const RodProfile& profile, double kick_eps = 0.0, dou
   return species;
 }
 
-/// The paper's drive (f = 200 Hz, Gamma = 7, w = 1.2 mm) in a periodic cell, no rods yet.
+/// The paper's drive in a periodic cell, no rods yet.
 inline Model paper_model(double box_mm, double dt = 1.0e-4) {
   Model model;
   model.box_x = box_mm;
   model.box_y = box_mm;
-  model.drive.frequency = 200.0;
-  model.drive.amplitude = Drive::amplitude_from_gamma(7.0, 200.0);
-  model.drive.gap = 1.2;
+  model.drive = Drive::paper();
   model.dt = dt;
   return model;
 }

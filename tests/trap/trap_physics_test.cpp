@@ -23,9 +23,7 @@ constexpr double kStationarySpeed = 5.0;
 engine::Model trap_model(double box, const trap::VTrap& trap, std::uint64_t seed) {
   engine::Model model;
   model.box_x = model.box_y = box;
-  model.drive.frequency = 200.0;
-  model.drive.amplitude = engine::Drive::amplitude_from_gamma(7.0, 200.0);
-  model.drive.gap = 1.2;
+  model.drive = engine::Drive::paper();
   model.dt = 1.0e-4;
   model.seed = seed;
   model.materials = engine::MaterialTable::paper();
