@@ -22,7 +22,6 @@
 // (tests/engine/restitution_test.cpp).
 #include "engine/simulation.hpp"
 
-#include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <cmath>
@@ -205,7 +204,6 @@ struct Simulation::Impl {
     world = std::make_unique<RodWorld>(dispatcher.get(), broadphase.get(), solver.get(),
                                        configuration.get());
     world->setGravity(btVector3(0, 0, -kGravity));
-    world->getSimulationIslandManager()->setSplitIslands(false);
     // No continuous collision detection (DESIGN.md): this also keeps Bullet from widening each
     // rod's broadphase box by its predicted motion (see rod_world.cpp).
     world->getDispatchInfo().m_useContinuous = false;
