@@ -6,9 +6,8 @@
 #include <ostream>
 
 #include "bench/benchmark.hpp"
-#include "engine/rod_shape.hpp"
+#include "bench/standard_system.hpp"
 #include "engine/simulation.hpp"
-#include "engine/units.hpp"
 #include "metrics/single_rod.hpp"
 
 namespace rodsort::bench {
@@ -33,11 +32,7 @@ engine::Model single_rod(double dt, double kick_eps, int solver_iterations, std:
   model.drive = engine::Drive::paper();
   model.dt = dt;
   model.seed = seed;
-  engine::Species species;
-  species.name = "A";
-  species.shape = engine::make_rod_shape(engine::preset_a_profile(), kBrassDensity);
-  species.noise.kick_eps = kick_eps;
-  model.species.push_back(species);
+  model.species.push_back(rod_a_species(kick_eps));
   model.rods.push_back({0, 15.0, 15.0, 0.0});
   return model;
 }

@@ -30,6 +30,14 @@ SystemSpec find_system(const std::string& name) {
   throw std::invalid_argument("unknown system '" + name + "'; expected one of " + known);
 }
 
+engine::Species rod_a_species(double kick_eps) {
+  engine::Species species;
+  species.name = "A";
+  species.shape = engine::make_rod_shape(engine::preset_a_profile(), kBrassDensity);
+  species.noise.kick_eps = kick_eps;
+  return species;
+}
+
 engine::Model build_model(const SystemSpec& system, double dt, std::uint64_t seed) {
   engine::Model model;
   model.box_x = system.box;
@@ -38,11 +46,7 @@ engine::Model build_model(const SystemSpec& system, double dt, std::uint64_t see
   model.dt = dt;
   model.seed = seed;
 
-  engine::Species species;
-  species.name = "A";
-  species.shape = engine::make_rod_shape(engine::preset_a_profile(), kBrassDensity);
-  species.noise.kick_eps = kPaperKickEps;
-  model.species.push_back(species);
+  model.species.push_back(rod_a_species(kPaperKickEps));
 
   if (system.trap_arm > 0.0) {
     const trap::VTrap trap =
@@ -56,7 +60,7 @@ engine::Model build_model(const SystemSpec& system, double dt, std::uint64_t see
     return model;
   }
   engine::RandomStream placement(seed, 0, engine::StreamPurpose::kPlacement);
-  model.rods = place_on_lattice(species.shape, system.rod_count, model.box_x, model.box_y,
+  model.rods = place_on_lattice(model.species.front().shape, system.rod_count, model.box_x, model.box_y,
                                 model.walls, placement);
   return model;
 }

@@ -34,6 +34,9 @@ inline constexpr double kTrapWallThickness = 1.0;
 /// The paper's collision kick [1/mm].
 inline constexpr double kPaperKickEps = 0.01;
 
+/// Rod A of brass with the collision kick `kick_eps` [1/mm].
+engine::Species rod_a_species(double kick_eps);
+
 /// single, then the paper's system with side x1, x2, x4 (319, 1,276, 5,104 rods).
 std::vector<SystemSpec> standard_systems();
 
