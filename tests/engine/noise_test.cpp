@@ -47,26 +47,21 @@ NoiseMeasurement measure(const Species& species, double dt, int rods, double sec
 
 }  // namespace
 
-TEST_CASE("the kick rate does not depend on dt", "[physics][noise]") {
+TEST_CASE("the kick rate and the rotational diffusion do not depend on dt", "[physics][noise]") {
   const Species rod = testing::rod_species(preset_a_profile(), 0.01);
-  const double coarse = measure(rod, 1.0e-4, 10, 25.0).kick_rate;
-  const double fine = measure(rod, 2.5e-5, 10, 25.0).kick_rate;
-  INFO("kicks per second: " << coarse << " at dt = 1e-4, " << fine << " at dt = 2.5e-5");
-  CHECK(coarse == Approx(fine).epsilon(0.10));
+  const NoiseMeasurement coarse = measure(rod, 1.0e-4, 10, 25.0);
+  const NoiseMeasurement fine = measure(rod, 2.5e-5, 10, 25.0);
+  INFO("kicks per second: " << coarse.kick_rate << " at dt = 1e-4, " << fine.kick_rate
+                            << " at dt = 2.5e-5");
+  INFO("D_r [rad^2/s]: " << coarse.rotational_diffusion << " at dt = 1e-4, "
+                         << fine.rotational_diffusion << " at dt = 2.5e-5");
+  CHECK(coarse.kick_rate == Approx(fine.kick_rate).epsilon(0.10));
   // The rod hits the plates a few times per drive period (200 Hz).
-  CHECK(coarse > 200.0);
-  CHECK(coarse < 2000.0);
-}
-
-TEST_CASE("the rotational diffusion from kicks has converged in dt at 5e-5 s", "[physics][noise]") {
-  // At dt = 1e-4 s D_r differs by ~13% from its small-dt value although the kick rate and the
-  // mean squared kick agree within 5%: the rod's spin dynamics between kicks are not converged
-  // there (docs/model.md, "Collision kick").
-  const Species rod = testing::rod_species(preset_a_profile(), 0.01);
-  const double coarse = measure(rod, 5.0e-5, 10, 25.0).rotational_diffusion;
-  const double fine = measure(rod, 2.5e-5, 10, 25.0).rotational_diffusion;
-  INFO("D_r [rad^2/s]: " << coarse << " at dt = 5e-5, " << fine << " at dt = 2.5e-5");
-  CHECK(coarse == Approx(fine).epsilon(0.10));
+  CHECK(coarse.kick_rate > 200.0);
+  CHECK(coarse.kick_rate < 2000.0);
+  // The spin a kick gives decays over many impacts (~0.1 s), through friction with the plates, so
+  // this holds only with a converged friction solve (engine/simulation.cpp, solver mode).
+  CHECK(coarse.rotational_diffusion == Approx(fine.rotational_diffusion).epsilon(0.10));
 }
 
 TEST_CASE("rotational diffusion grows with the kick strength", "[physics][noise]") {
