@@ -145,7 +145,8 @@ std::vector<KeyInfo> scenario_keys() {
       {"run.dt", V::real, "s", "1.0e-4", positive(), {},
        "Time step; at least 20 steps per drive period."},
       {"run.solver_iterations", V::integer, "", "10", closed(1, 1000), {},
-       "Iterations of Bullet's contact solver per step."},
+       "Iterations of Bullet's contact solver per step; the rods' speed and D_r depend on it "
+       "by 10-20% (docs/performance.md, section 4)."},
 
       {"output", V::section, "", "", {}, {}, "What the run writes, and how often."},
       {"output.frame_interval", V::real, "s", "0.07", positive(), {},
