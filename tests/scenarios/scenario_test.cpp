@@ -255,6 +255,26 @@ TEST_CASE("intervals that are not a multiple of dt are warned about", "[scenario
   CHECK(result.scenario->output.frame_steps == 700);
 }
 
+TEST_CASE("RnT rods with the collision kick at a large dt are warned about", "[scenario]") {
+  const std::string species =
+      "species: [{name: RnT, shape: {preset: RnT}, count: 10, noise: {kick_eps: 0.01}}]\n";
+  const LoadResult coarse = load_scenario_text(species, "k.yaml");
+  REQUIRE(coarse.ok());
+  REQUIRE(coarse.diagnostics.size() == 1);
+  CHECK(coarse.diagnostics[0].severity == Severity::warning);
+  CHECK_THAT(coarse.diagnostics[0].to_string(),
+             Catch::Contains("k.yaml:1:74: warning: species[0].noise.kick_eps: the collision "
+                             "kick's rotational diffusion of RnT rods has not converged at "
+                             "run.dt = 1e-4 s"));
+  CHECK(load_scenario_text(species + "run: {dt: 2.5e-5}\n", "k.yaml").diagnostics.empty());
+  // White noise instead of the kick, or rod A with the kick, is converged at the default dt.
+  const std::string white =
+      "species: [{name: RnT, shape: {preset: RnT}, count: 10, noise: {kick_eps: 0, white_Dr: "
+      "1}}]\n";
+  CHECK(load_scenario_text(white, "k.yaml").diagnostics.empty());
+  CHECK(load_scenario_text("species: [{name: A, count: 10}]\n", "k.yaml").diagnostics.empty());
+}
+
 TEST_CASE("a missing file is an error, not an exception", "[scenario]") {
   const LoadResult result = load_scenario("no/such/file.yaml");
   CHECK_FALSE(result.ok());
