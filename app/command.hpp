@@ -21,5 +21,6 @@ Command add_summarize_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_plot_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
+Command add_single_command(CLI::App& app);
 
 }  // namespace rodsort::app

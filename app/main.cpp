@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
       app::add_run_command(app),     app::add_validate_command(app),  app::add_sweep_command(app),
       app::add_analyze_command(app), app::add_summarize_command(app), app::add_render_command(app),
       app::add_plot_command(app),    app::add_bench_command(app),
+      app::add_single_command(app),
   };
   for (const app::Command& command : commands) command.subcommand->footer(kExitCodes);
   try {

@@ -5,6 +5,7 @@
 
     rodsort_plot.py RUN_DIR [RUN_DIR ...]  [--what eta,population,dtheta] [-o DIR]
     rodsort_plot.py SWEEP_DIR              [--what eta-theta,thetac-eps]   [-o DIR]
+    rodsort_plot.py STUDY_DIR [STUDY_DIR ...] [--what axial-velocity,msd]  [-o DIR]
 
 From a run directory (metrics.csv, rods.csv):
   eta         eta(t), with eta in the trap and one line per species for mixtures
@@ -14,6 +15,9 @@ From a run directory (metrics.csv, rods.csv):
 From a sweep directory (sweep.csv):
   eta-theta   time-averaged eta against the trap angle, one line per noise level, theta_c marked
   thetac-eps  theta_c against the collision-kick noise eps
+From a single-particle study directory (`rodsort single -o`: summary.csv, lags.csv):
+  axial-velocity  P(V_x), the axial velocity over the window, with the experiments' range of v0
+  msd             mean squared displacement and heading correlation against the lag
 theta_c follows metrics/critical_angle.cpp: the first downward crossing of half the mean eta of the
 three smallest angles, interpolated linearly; it is also written to theta_c.csv.
 
@@ -30,6 +34,7 @@ import sys
 
 RUN_KINDS = ("eta", "population", "dtheta")
 SWEEP_KINDS = ("eta-theta", "thetac-eps")
+STUDY_KINDS = ("axial-velocity", "msd")
 
 # The Okabe-Ito palette in render/palette.cpp's order.
 SPECIES_COLOURS = ("#0072B2", "#E69F00", "#009E73", "#D55E00", "#CC79A7", "#56B4E9", "#F0E442")
@@ -454,6 +459,48 @@ def write_critical_angles(sweep, out_dir, written):
     written.append(path)
 
 
+def study_label(study_dir):
+    summary = Table(os.path.join(study_dir, "summary.csv"))
+    return f"{run_label(study_dir)} ({summary.text('species')[0]})"
+
+
+def plot_axial_velocity(plt, studies, out_dir, formats, written):
+    figure, axes = new_figure(plt)
+    for index, study_dir in enumerate(studies):
+        table = Table(os.path.join(study_dir, "axial_velocity.csv"))
+        summary = Table(os.path.join(study_dir, "summary.csv"))
+        v0 = summary.numbers("v0_mm_s")[0]
+        axes.step(table.numbers("vx_mm_s"), table.numbers("density_s_mm"), where="mid",
+                  color=colour(index), linewidth=1.2,
+                  label=f"{study_label(study_dir)}: v0 = {v0:.2f} mm/s")
+    axes.axvspan(3.6 - 2.5, 3.6 + 2.5, color="0.85", zorder=0,
+                 label="experiments, rod A: 3.6 ± 2.5 mm/s")
+    axes.set_xlabel("axial velocity V_x over the window [mm/s] (+: toward the thin end)")
+    axes.set_ylabel("P(V_x) [s/mm]")
+    axes.set_ylim(bottom=0.0)
+    axes.legend(frameon=False, fontsize="small")
+    save(plt, figure, out_dir, "axial_velocity", formats, written)
+
+
+def plot_msd(plt, studies, out_dir, formats, written):
+    figure, (left, right) = plt.subplots(1, 2, figsize=(9.6, 4.0), layout="constrained")
+    for axes in (left, right):
+        axes.grid(True, color="0.9", linewidth=0.6)
+    for index, study_dir in enumerate(studies):
+        table = Table(os.path.join(study_dir, "lags.csv"))
+        lag = table.numbers("lag_s")
+        left.loglog(lag, table.numbers("position_msd_mm2"), color=colour(index), linewidth=1.2,
+                    label=study_label(study_dir))
+        right.plot(lag, table.numbers("orientation_correlation"), color=colour(index),
+                   linewidth=1.2, label=study_label(study_dir))
+    left.set_xlabel("lag [s]")
+    left.set_ylabel("mean squared displacement [mm²]")
+    right.set_xlabel("lag [s]")
+    right.set_ylabel("heading correlation ⟨cos Δφ⟩")
+    left.legend(frameon=False, fontsize="small")
+    save(plt, figure, out_dir, "msd", formats, written)
+
+
 # ---------------------------------------------------------------------------------------------
 
 
@@ -461,7 +508,8 @@ def parse_arguments(argv):
     parser = argparse.ArgumentParser(
         prog="rodsort plot", description=__doc__.split("\n\n")[0],
         epilog="Kinds: " + ", ".join(RUN_KINDS) + " (run directories); " +
-        ", ".join(SWEEP_KINDS) + " (a sweep directory).")
+        ", ".join(SWEEP_KINDS) + " (a sweep directory); " + ", ".join(STUDY_KINDS) +
+        " (single-particle study directories).")
     parser.add_argument("paths", nargs="+", metavar="RUN_DIR|SWEEP_DIR",
                         help="run directories (metrics.csv, rods.csv) or one sweep directory "
                         "(sweep.csv)")
@@ -482,20 +530,24 @@ def main(argv):
     for path in paths:
         if not os.path.isdir(path):
             raise UsageError(f"{path}: not a directory")
+    is_study = [os.path.isfile(os.path.join(p, "lags.csv")) for p in paths]
+    study_mode = any(is_study)
+    if study_mode and not all(is_study):
+        raise UsageError("give single-particle study directories (lags.csv) alone")
     is_sweep = [os.path.isfile(os.path.join(p, "sweep.csv")) for p in paths]
     if any(is_sweep) and len(paths) > 1:
         raise UsageError("give one sweep directory, or one or more run directories")
     sweep_mode = is_sweep[0]
-    if not sweep_mode:
+    if not sweep_mode and not study_mode:
         for path in paths:
             if not os.path.isfile(os.path.join(path, "metrics.csv")):
                 raise UsageError(f"{path}: neither a run directory (metrics.csv) nor a sweep "
                                 "directory (sweep.csv)")
-    allowed = SWEEP_KINDS if sweep_mode else RUN_KINDS
+    allowed = STUDY_KINDS if study_mode else SWEEP_KINDS if sweep_mode else RUN_KINDS
     kinds = [k.strip() for k in arguments.what.split(",") if k.strip()]
     for kind in kinds:
         if kind not in allowed:
-            other = RUN_KINDS if sweep_mode else SWEEP_KINDS
+            other = RUN_KINDS + STUDY_KINDS if sweep_mode else SWEEP_KINDS
             hint = (f" ('{kind}' is drawn from a {'run' if sweep_mode else 'sweep'} directory)"
                     if kind in other else "")
             raise UsageError(f"--what: unknown kind '{kind}' for a "
@@ -544,7 +596,11 @@ def main(argv):
     else:
         for kind in kinds:
             try:
-                if kind == "eta":
+                if kind == "axial-velocity":
+                    plot_axial_velocity(plt, paths, out_dir, formats, written)
+                elif kind == "msd":
+                    plot_msd(plt, paths, out_dir, formats, written)
+                elif kind == "eta":
                     plot_eta(plt, paths, out_dir, formats, written)
                 elif kind == "population":
                     plot_population(plt, paths, out_dir, formats, written)

@@ -1,0 +1,167 @@
+#include "metrics/single_particle.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "metrics/kinematics.hpp"
+
+namespace rodsort::metrics {
+
+Track track_of(const std::vector<engine::Frame>& frames, int rod) {
+  Track track;
+  for (const engine::Frame& frame : frames) {
+    const engine::RodFrame& r = frame.rods.at(static_cast<std::size_t>(rod));
+    const double phi = heading(r);
+    track.time.push_back(frame.time);
+    track.position.push_back(r.unwrapped);
+    track.heading.push_back(track.heading.empty()
+                                ? phi
+                                : track.heading.back() + wrap_angle(phi - track.heading.back()));
+  }
+  return track;
+}
+
+std::vector<double> axial_velocities(const Track& track, int lag, int stride) {
+  assert(lag > 0 && stride > 0);
+  std::vector<double> velocities;
+  const std::size_t n = track.time.size();
+  for (std::size_t i = 0; i + static_cast<std::size_t>(lag) < n;
+       i += static_cast<std::size_t>(stride)) {
+    const std::size_t j = i + static_cast<std::size_t>(lag);
+    const double mean_heading = 0.5 * (track.heading[i] + track.heading[j]);
+    const Eigen::Vector2d axis(std::cos(mean_heading), std::sin(mean_heading));
+    velocities.push_back((track.position[j] - track.position[i]).dot(axis) /
+                         (track.time[j] - track.time[i]));
+  }
+  return velocities;
+}
+
+LagStatistics lag_statistics(const std::vector<Track>& tracks, const std::vector<int>& lags) {
+  LagStatistics statistics;
+  for (const int lag : lags) {
+    double position = 0.0, heading_square = 0.0, correlation = 0.0, time = 0.0;
+    long count = 0;
+    for (const Track& track : tracks) {
+      for (std::size_t i = 0; i + static_cast<std::size_t>(lag) < track.time.size(); ++i) {
+        const std::size_t j = i + static_cast<std::size_t>(lag);
+        const double turn = track.heading[j] - track.heading[i];
+        position += (track.position[j] - track.position[i]).squaredNorm();
+        heading_square += turn * turn;
+        correlation += std::cos(turn);
+        time += track.time[j] - track.time[i];
+        ++count;
+      }
+    }
+    const double n = count > 0 ? static_cast<double>(count) : std::nan("");
+    statistics.lag_time.push_back(time / n);
+    statistics.position_msd.push_back(position / n);
+    statistics.heading_msd.push_back(heading_square / n);
+    statistics.orientation_correlation.push_back(correlation / n);
+  }
+  return statistics;
+}
+
+double rotational_diffusion_fit(const std::vector<double>& lag_time,
+                                const std::vector<double>& heading_msd) {
+  const double n = static_cast<double>(lag_time.size());
+  double st = 0.0, sm = 0.0, stt = 0.0, stm = 0.0;
+  for (std::size_t i = 0; i < lag_time.size(); ++i) {
+    st += lag_time[i];
+    sm += heading_msd[i];
+    stt += lag_time[i] * lag_time[i];
+    stm += lag_time[i] * heading_msd[i];
+  }
+  const double denominator = n * stt - st * st;
+  if (lag_time.size() < 2 || denominator <= 0.0) return std::nan("");
+  return 0.5 * (n * stm - st * sm) / denominator;
+}
+
+RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity_series,
+                                double window, double threshold) {
+  RunsAndTumbles result;
+  result.threshold = threshold;
+  long windows = 0, running = 0, run_windows = 0, tumble_windows = 0;
+  for (const std::vector<double>& series : velocity_series) {
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      const bool runs = series[i] > threshold;
+      ++windows;
+      if (runs) ++running;
+      const bool last = i + 1 == series.size();
+      if (!last && (series[i + 1] > threshold) == runs) continue;
+      // A segment [start, i] ends here; only those bounded on both sides by the other kind count.
+      if (start > 0 && !last) {
+        const long length = static_cast<long>(i - start + 1);
+        if (runs) {
+          ++result.runs;
+          run_windows += length;
+        } else {
+          ++result.tumbles;
+          tumble_windows += length;
+        }
+      }
+      start = i + 1;
+    }
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  result.running_fraction =
+      windows > 0 ? static_cast<double>(running) / static_cast<double>(windows) : nan;
+  result.mean_run =
+      result.runs > 0 ? window * static_cast<double>(run_windows) / static_cast<double>(result.runs)
+                      : nan;
+  result.mean_tumble = result.tumbles > 0 ? window * static_cast<double>(tumble_windows) /
+                                                static_cast<double>(result.tumbles)
+                                          : nan;
+  return result;
+}
+
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return std::nan("");
+  std::sort(values.begin(), values.end());
+  const double position = q * static_cast<double>(values.size() - 1);
+  const std::size_t below = static_cast<std::size_t>(std::floor(position));
+  const std::size_t above = std::min(below + 1, values.size() - 1);
+  const double fraction = position - static_cast<double>(below);
+  return values[below] + fraction * (values[above] - values[below]);
+}
+
+TwoPeaks two_peaks(const std::vector<double>& bin_centre, const std::vector<double>& density) {
+  TwoPeaks peaks;
+  const std::size_t n = density.size();
+  if (n == 0) return peaks;
+  std::vector<double> smooth(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const std::size_t first = b > 0 ? b - 1 : 0, last = std::min(b + 1, n - 1);
+    double sum = 0.0;
+    for (std::size_t c = first; c <= last; ++c) sum += density[c];
+    smooth[b] = sum / static_cast<double>(last - first + 1);
+  }
+  const std::size_t top =
+      static_cast<std::size_t>(std::max_element(smooth.begin(), smooth.end()) - smooth.begin());
+  peaks.main = peaks.second = bin_centre[top];
+  if (smooth[top] <= 0.0) return peaks;
+  // The second peak is the one that rises most above the valley separating it from the main
+  // peak (its prominence); walking away from the main peak, the lowest density met so far is
+  // that valley.
+  double best_prominence = 0.0;
+  for (const int direction : {-1, 1}) {
+    double lowest = smooth[top];
+    std::size_t b = top;
+    while (direction < 0 ? b > 0 : b + 1 < n) {
+      b = direction < 0 ? b - 1 : b + 1;
+      lowest = std::min(lowest, smooth[b]);
+      const double prominence = smooth[b] - lowest;
+      if (prominence > best_prominence) {
+        best_prominence = prominence;
+        peaks.second = bin_centre[b];
+        peaks.second_height = smooth[b] / smooth[top];
+        peaks.valley = lowest / smooth[b];
+      }
+    }
+  }
+  return peaks;
+}
+
+}  // namespace rodsort::metrics

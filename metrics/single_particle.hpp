@@ -1,0 +1,78 @@
+#pragma once
+// What one free rod does on the vibrated plate, as the experiments report it: the axial velocity
+// V_x over the camera's interval (its mean is v0, its distribution P(V_x) shows runs and tumbles),
+// the mean squared displacement of the centre, and the decorrelation of the heading (D_r and the
+// persistence time). A track is one rod followed frame by frame, unwrapped: positions across the
+// periodic edges and headings across +-pi, so every lag sees the real motion.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "engine/frame.hpp"
+
+namespace rodsort::metrics {
+
+struct Track {
+  std::vector<double> time;               ///< [s], equally spaced
+  std::vector<Eigen::Vector2d> position;  ///< unwrapped centre of mass [mm]
+  std::vector<double> heading;            ///< unwrapped in-plane thick-to-thin direction [rad]
+};
+
+/// Rod `rod` of every frame as a track. Frames must be close enough that the rod turns by less
+/// than half a turn between two of them.
+Track track_of(const std::vector<engine::Frame>& frames, int rod);
+
+/// Axial velocity over windows of `lag` samples [mm/s]: the displacement from sample i to i + lag
+/// projected on the mean in-plane axis of the two samples, over the time between them; positive
+/// toward the thin end. Windows start every `stride` samples (stride = lag: back to back).
+std::vector<double> axial_velocities(const Track& track, int lag, int stride);
+
+/// Averages over tracks and start samples, at each lag (in samples).
+struct LagStatistics {
+  std::vector<double> lag_time;                 ///< [s]
+  std::vector<double> position_msd;             ///< <|r(t + lag) - r(t)|^2> [mm^2]
+  std::vector<double> heading_msd;              ///< <(phi(t + lag) - phi(t))^2> [rad^2]
+  std::vector<double> orientation_correlation;  ///< <cos(phi(t + lag) - phi(t))>
+};
+LagStatistics lag_statistics(const std::vector<Track>& tracks, const std::vector<int>& lags);
+
+/// D_r from a least-squares line heading_msd = c + 2 D_r t over the given lag times; the intercept
+/// keeps the fast, bounded rattling of the heading out of D_r [rad^2/s].
+double rotational_diffusion_fit(const std::vector<double>& lag_time,
+                                const std::vector<double>& heading_msd);
+
+/// Runs and tumbles from back-to-back windows: a window runs when its axial velocity exceeds the
+/// threshold, tumbles otherwise; consecutive windows of one kind make one run or one tumble.
+/// Segments cut by the start or the end of a series are counted in the fraction but not in the
+/// durations.
+struct RunsAndTumbles {
+  double threshold = 0.0;         ///< [mm/s]
+  double running_fraction = 0.0;  ///< of all windows
+  double mean_run = 0.0;          ///< duration of complete runs [s]; NaN when there is none
+  double mean_tumble = 0.0;       ///< duration of complete tumbles [s]; NaN when there is none
+  long runs = 0;                  ///< complete runs
+  long tumbles = 0;               ///< complete tumbles
+};
+RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity_series,
+                                double window, double threshold);
+
+/// The q-quantile (0..1) of the values, by linear interpolation between order statistics.
+double quantile(std::vector<double> values, double q);
+
+/// The two highest peaks of a distribution given as a density on equal bins (P(V_x)), after a
+/// running mean over three bins. The second peak is the highest bin that is separated from the
+/// main one by a valley: the lowest density between them relative to the second peak's height.
+/// P(V_x) of run-and-tumble motion has a tumble peak near zero and a run peak; a unimodal
+/// distribution has no second peak (second_height 0, valley 1).
+struct TwoPeaks {
+  double main = 0.0;           ///< position of the highest peak (bin centre)
+  double second = 0.0;         ///< position of the second peak
+  double second_height = 0.0;  ///< its height relative to the main peak's
+  double valley = 1.0;         ///< lowest density between the peaks over the second's height
+  /// Two clear peaks: the second at least 10% as high as the main one, a valley at most half
+  /// the second's height between them.
+  bool bimodal() const { return second_height >= 0.1 && valley <= 0.5; }
+};
+TwoPeaks two_peaks(const std::vector<double>& bin_centre, const std::vector<double>& density);
+
+}  // namespace rodsort::metrics

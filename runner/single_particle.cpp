@@ -1,0 +1,331 @@
+#include "runner/single_particle.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <ostream>
+
+#include "engine/simulation.hpp"
+#include "metrics/histogram.hpp"
+#include "metrics/single_particle.hpp"
+#include "runner/atomic_file.hpp"
+#include "runner/clocks.hpp"
+#include "runner/csv_table.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/json_text.hpp"
+#include "runner/progress.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace rodsort::runner {
+namespace {
+
+/// Lags of the heading fit and of lags.csv beyond it, in windows.
+constexpr int kFitMaxWindows = 10;
+constexpr int kLagMaxWindows = 100;
+/// Width of the bins of P(V_x) [mm/s].
+constexpr double kVelocityBin = 0.5;
+
+struct MeanAndError {
+  double mean = 0.0, error = 0.0, deviation = 0.0;
+};
+
+MeanAndError mean_and_error(const std::vector<double>& values) {
+  MeanAndError result;
+  if (values.empty()) return result;
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  const double n = static_cast<double>(values.size());
+  result.mean = sum / n;
+  if (values.size() < 2) return result;
+  double squares = 0.0;
+  for (const double v : values) squares += (v - result.mean) * (v - result.mean);
+  result.deviation = std::sqrt(squares / (n - 1.0));
+  result.error = result.deviation / std::sqrt(n);
+  return result;
+}
+
+std::string number(double value) { return json_number(value); }
+
+/// The model of one free rod of species `species`, alone in a periodic cell.
+engine::Model single_rod_model(const engine::Model& scenario_model, int species, double cell,
+                               double heading, std::uint64_t seed) {
+  engine::Model model = scenario_model;
+  model.box_x = model.box_y = cell;
+  model.walls.clear();
+  model.species = {scenario_model.species[static_cast<std::size_t>(species)]};
+  model.rods = {{0, 0.5 * cell, 0.5 * cell, heading}};
+  model.seed = seed;
+  return model;
+}
+
+/// P(V_x) on bins of kVelocityBin that cover every value.
+metrics::Histogram velocity_histogram(const std::vector<double>& velocities) {
+  double low = 0.0, high = 0.0;
+  for (const double v : velocities) {
+    low = std::min(low, v);
+    high = std::max(high, v);
+  }
+  low = kVelocityBin * std::floor(low / kVelocityBin);
+  high = kVelocityBin * (std::floor(high / kVelocityBin) + 1.0);
+  metrics::Histogram histogram(low, high,
+                               static_cast<int>(std::lround((high - low) / kVelocityBin)));
+  histogram.add(velocities);
+  return histogram;
+}
+
+struct RodResult {
+  metrics::Track track;
+  std::vector<double> velocities;    ///< overlapping windows, one per sample
+  std::vector<double> back_to_back;  ///< windows back to back
+  std::int64_t kicks = 0;
+};
+
+}  // namespace
+
+int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
+                        std::ostream& err) {
+  const scenarios::LoadResult loaded =
+      scenarios::load_scenario_with_options(request.scenario, request.set_options);
+  err << scenarios::format_diagnostics(loaded.diagnostics);
+  if (!loaded.ok()) return kExitUsage;
+  const scenarios::Scenario& scenario = *loaded.scenario;
+  const engine::Model& model = scenario.model;
+
+  int species = 0;
+  if (!request.species.empty()) {
+    species = -1;
+    std::string names;
+    for (std::size_t s = 0; s < model.species.size(); ++s) {
+      if (model.species[s].name == request.species) species = static_cast<int>(s);
+      names += (names.empty() ? "" : ", ") + model.species[s].name;
+    }
+    if (species < 0) {
+      err << "rodsort: error: --species: no species '" << request.species << "' in "
+          << request.scenario.string() << " (it has " << names << ")\n";
+      return kExitUsage;
+    }
+  }
+  const double window = scenario.metrics.window;
+  const std::int64_t sample_steps = std::llround(request.sample_interval / model.dt);
+  const int window_samples =
+      static_cast<int>(std::lround(window / (static_cast<double>(sample_steps) * model.dt)));
+  if (sample_steps < 1 || window_samples < 1 ||
+      std::abs(static_cast<double>(window_samples * sample_steps) * model.dt - window) >
+          1e-9 * window) {
+    err << "rodsort: error: --sample " << request.sample_interval << ": must be a multiple of dt ("
+        << model.dt << " s) that divides metrics.window (" << window << " s)\n";
+    return kExitUsage;
+  }
+  if (request.duration < 2.0 * kFitMaxWindows * window) {
+    err << "rodsort: error: --duration " << request.duration << ": must be at least "
+        << 2.0 * kFitMaxWindows * window << " s (twice the lags of the D_r fit, " << kFitMaxWindows
+        << " windows)\n";
+    return kExitUsage;
+  }
+  const double longest_rod = scenario.species[static_cast<std::size_t>(species)].length;
+  if (request.cell < 4.0 * longest_rod) {
+    err << "rodsort: error: --cell " << request.cell << ": must be at least four rod lengths ("
+        << 4.0 * longest_rod << " mm), or the rod meets its own image\n";
+    return kExitUsage;
+  }
+  const double period = 1.0 / model.drive.frequency;
+  const std::int64_t samples = std::llround(request.duration / request.sample_interval);
+  const std::string& species_name = model.species[static_cast<std::size_t>(species)].name;
+
+  std::vector<RodResult> rods;
+  const double cpu_start = process_cpu_seconds();
+  const double wall_start = wall_seconds();
+  // Progress counts rod-seconds: the rods done times the measured time of each.
+  ProgressReporter progress(stderr, isatty(fileno(stderr)) != 0);
+  const auto progress_sample = [&](int rods_done) {
+    ProgressSample sample;
+    sample.simulated_s = request.duration * rods_done;
+    sample.duration_s = request.duration * request.rods;
+    sample.session_wall_s = wall_seconds() - wall_start;
+    sample.session_cpu_s = process_cpu_seconds() - cpu_start;
+    return sample;
+  };
+  for (int rod = 0; rod < request.rods; ++rod) {
+    const double heading = 2.0 * std::numbers::pi * rod / request.rods;
+    engine::Simulation simulation(single_rod_model(model, species, request.cell, heading,
+                                                   model.seed + static_cast<std::uint64_t>(rod)));
+    const double warmup = request.warmup + period * rod / request.rods;
+    simulation.advance(std::llround(warmup / model.dt));
+    const std::int64_t kicks_before = simulation.counters().kicks;
+    std::vector<engine::Frame> frames{simulation.frame()};
+    for (std::int64_t s = 0; s < samples; ++s) {
+      simulation.advance(sample_steps);
+      frames.push_back(simulation.frame());
+    }
+    RodResult result;
+    result.track = metrics::track_of(frames, 0);
+    result.velocities = metrics::axial_velocities(result.track, window_samples, 1);
+    result.back_to_back = metrics::axial_velocities(result.track, window_samples, window_samples);
+    result.kicks = simulation.counters().kicks - kicks_before;
+    rods.push_back(std::move(result));
+    progress.update(progress_sample(rod + 1));
+  }
+  progress.finish(progress_sample(request.rods));
+  const double cpu = process_cpu_seconds() - cpu_start;
+
+  // Per rod: v0, the spread of V_x, D_r from the heading's MSD over 1..10 windows, running.
+  std::vector<int> fit_lags, all_lags;
+  // lags.csv: every sample up to one window, then whole windows, as long as a track lasts.
+  for (int s = 1; s < window_samples; ++s) all_lags.push_back(s);
+  for (int w = 1; w <= kLagMaxWindows; ++w) {
+    if (w <= kFitMaxWindows) fit_lags.push_back(w * window_samples);
+    if (w * window_samples < samples) all_lags.push_back(w * window_samples);
+  }
+  std::vector<double> every_velocity, per_rod_speed, per_rod_deviation, per_rod_diffusion;
+  std::vector<std::vector<double>> series;
+  std::vector<metrics::Track> tracks;
+  for (const RodResult& rod : rods) {
+    every_velocity.insert(every_velocity.end(), rod.velocities.begin(), rod.velocities.end());
+    const MeanAndError speed = mean_and_error(rod.velocities);
+    per_rod_speed.push_back(speed.mean);
+    per_rod_deviation.push_back(speed.deviation);
+    const metrics::LagStatistics fit = metrics::lag_statistics({rod.track}, fit_lags);
+    per_rod_diffusion.push_back(metrics::rotational_diffusion_fit(fit.lag_time, fit.heading_msd));
+    series.push_back(rod.back_to_back);
+    tracks.push_back(rod.track);
+  }
+  const double threshold = request.run_threshold >= 0.0
+                               ? request.run_threshold
+                               : 0.5 * metrics::quantile(every_velocity, 0.9);
+  const metrics::RunsAndTumbles runs = metrics::runs_and_tumbles(series, window, threshold);
+  const MeanAndError speed = mean_and_error(per_rod_speed);
+  const MeanAndError diffusion = mean_and_error(per_rod_diffusion);
+  const MeanAndError spread = mean_and_error(every_velocity);
+  std::int64_t kicks = 0;
+  for (const RodResult& rod : rods) kicks += rod.kicks;
+  const metrics::Histogram histogram = velocity_histogram(every_velocity);
+  const std::vector<double> density = histogram.density();
+  std::vector<double> bin_centre;
+  for (std::size_t b = 0; b < density.size(); ++b) {
+    bin_centre.push_back(histogram.bin_center(static_cast<int>(b)));
+  }
+  const metrics::TwoPeaks peaks = metrics::two_peaks(bin_centre, density);
+  const double measured = request.duration * request.rods;
+
+  char line[512];
+  out << "species " << species_name << ": " << request.rods << " rods x " << request.duration
+      << " s, V_x over " << window << " s\n";
+  std::snprintf(line, sizeof line,
+                "  v0        %.3f +- %.3f mm/s (mean over rods +- standard error)\n"
+                "  V_x       sd %.3f mm/s over windows, sd %.3f mm/s between rods' means\n",
+                speed.mean, speed.error, spread.deviation, speed.deviation);
+  out << line;
+  std::snprintf(line, sizeof line,
+                "  D_r       %.4f +- %.4f rad^2/s (lags %g..%g s); persistence time 1/D_r %.3g s, "
+                "length v0/D_r %.3g mm\n",
+                diffusion.mean, diffusion.error, window, window * kFitMaxWindows,
+                1.0 / diffusion.mean, speed.mean / diffusion.mean);
+  out << line;
+  std::snprintf(line, sizeof line,
+                "  running   %.3f of windows (V_x > %.3g mm/s); mean run %.3g s, mean tumble "
+                "%.3g s (%ld runs, %ld tumbles)\n",
+                runs.running_fraction, threshold, runs.mean_run, runs.mean_tumble, runs.runs,
+                runs.tumbles);
+  out << line;
+  std::snprintf(line, sizeof line,
+                "  P(V_x)    %s: main peak %.3g mm/s; second peak %.3g mm/s, %.2f as high, "
+                "valley %.2f of it\n"
+                "  kicks     %.0f per s; cost %.3g CPU-s for %.0f rod-seconds\n",
+                peaks.bimodal() ? "bimodal" : "unimodal", peaks.main, peaks.second,
+                peaks.second_height, peaks.valley, static_cast<double>(kicks) / measured, cpu,
+                measured);
+  out << line;
+
+  if (request.output.empty()) return kExitOk;
+  try {
+    std::filesystem::create_directories(request.output);
+    write_file_atomically(request.output / "scenario.resolved.yaml",
+                          scenarios::resolved_yaml(scenario));
+    CsvTable summary;
+    summary.header = {"species",
+                      "rods",
+                      "duration_s",
+                      "window_s",
+                      "v0_mm_s",
+                      "v0_sem_mm_s",
+                      "vx_sd_mm_s",
+                      "v0_rod_sd_mm_s",
+                      "Dr_rad2_s",
+                      "Dr_sem_rad2_s",
+                      "persistence_time_s",
+                      "persistence_length_mm",
+                      "run_threshold_mm_s",
+                      "running_fraction",
+                      "mean_run_s",
+                      "mean_tumble_s",
+                      "runs",
+                      "tumbles",
+                      "bimodal",
+                      "main_peak_mm_s",
+                      "second_peak_mm_s",
+                      "second_peak_height",
+                      "valley",
+                      "kicks_per_s",
+                      "cpu_s"};
+    summary.rows.push_back({species_name,
+                            std::to_string(request.rods),
+                            number(request.duration),
+                            number(window),
+                            number(speed.mean),
+                            number(speed.error),
+                            number(spread.deviation),
+                            number(speed.deviation),
+                            number(diffusion.mean),
+                            number(diffusion.error),
+                            number(1.0 / diffusion.mean),
+                            number(speed.mean / diffusion.mean),
+                            number(threshold),
+                            number(runs.running_fraction),
+                            number(runs.mean_run),
+                            number(runs.mean_tumble),
+                            std::to_string(runs.runs),
+                            std::to_string(runs.tumbles),
+                            peaks.bimodal() ? "1" : "0",
+                            number(peaks.main),
+                            number(peaks.second),
+                            number(peaks.second_height),
+                            number(peaks.valley),
+                            number(static_cast<double>(kicks) / measured),
+                            number(cpu)});
+    write_file_atomically(request.output / "summary.csv", csv_text(summary));
+
+    CsvTable per_rod;
+    per_rod.header = {"rod", "seed", "v0_mm_s", "vx_sd_mm_s", "Dr_rad2_s"};
+    for (std::size_t r = 0; r < rods.size(); ++r) {
+      per_rod.rows.push_back({std::to_string(r), std::to_string(model.seed + r),
+                              number(per_rod_speed[r]), number(per_rod_deviation[r]),
+                              number(per_rod_diffusion[r])});
+    }
+    write_file_atomically(request.output / "per_rod.csv", csv_text(per_rod));
+
+    CsvTable distribution;
+    distribution.header = {"vx_mm_s", "density_s_mm"};
+    for (std::size_t b = 0; b < density.size(); ++b) {
+      distribution.rows.push_back({number(bin_centre[b]), number(density[b])});
+    }
+    write_file_atomically(request.output / "axial_velocity.csv", csv_text(distribution));
+
+    const metrics::LagStatistics lags = metrics::lag_statistics(tracks, all_lags);
+    CsvTable lag_table;
+    lag_table.header = {"lag_s", "position_msd_mm2", "heading_msd_rad2", "orientation_correlation"};
+    for (std::size_t l = 0; l < lags.lag_time.size(); ++l) {
+      lag_table.rows.push_back({number(lags.lag_time[l]), number(lags.position_msd[l]),
+                                number(lags.heading_msd[l]),
+                                number(lags.orientation_correlation[l])});
+    }
+    write_file_atomically(request.output / "lags.csv", csv_text(lag_table));
+  } catch (const std::exception& error) {
+    err << "rodsort: error: " << error.what() << '\n';
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+}  // namespace rodsort::runner

@@ -1,0 +1,131 @@
+// The single-particle measures on tracks whose answers are known: straight runs, steady turning,
+// run-and-tumble series, one and two peaks.
+
+#include "metrics/single_particle.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+using namespace rodsort;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+/// A rod at `speed` along its heading, the heading turning at `turn_rate`, sampled every `dt`.
+metrics::Track steady_track(double speed, double turn_rate, double dt, int samples) {
+  metrics::Track track;
+  Eigen::Vector2d position(0.0, 0.0);
+  for (int i = 0; i < samples; ++i) {
+    const double phi = 0.3 + turn_rate * dt * i;
+    track.time.push_back(dt * i);
+    track.heading.push_back(phi);
+    track.position.push_back(position);
+    // Exact displacement along an arc, so the chord follows the mean heading of its ends.
+    const double next = phi + turn_rate * dt;
+    const double chord =
+        turn_rate == 0.0 ? speed * dt : 2.0 * speed / turn_rate * std::sin(0.5 * turn_rate * dt);
+    position += chord * Eigen::Vector2d(std::cos(0.5 * (phi + next)), std::sin(0.5 * (phi + next)));
+  }
+  return track;
+}
+
+}  // namespace
+
+TEST_CASE("track_of unwraps the heading across +-pi and keeps unwrapped positions",
+          "[metrics][single]") {
+  std::vector<engine::Frame> frames;
+  for (int i = 0; i < 5; ++i) {
+    engine::Frame frame;
+    frame.time = 0.01 * i;
+    engine::RodFrame rod;
+    rod.velocity.setZero();
+    rod.angular_velocity.setZero();
+    const double phi = 3.0 + 0.1 * i;  // crosses pi between the second and third frame
+    rod.axis = Eigen::Vector3d(std::cos(phi), std::sin(phi), 0.0);
+    rod.unwrapped = Eigen::Vector2d(100.0 * i, 0.0);
+    rod.position = Eigen::Vector2d(1.0, 0.0);
+    frame.rods.push_back(rod);
+    frames.push_back(frame);
+  }
+  const metrics::Track track = metrics::track_of(frames, 0);
+  REQUIRE(track.heading.size() == 5);
+  CHECK_THAT(track.heading.back() - track.heading.front(), WithinAbs(0.4, 1e-12));
+  CHECK_THAT(track.position.back().x(), WithinAbs(400.0, 1e-12));
+}
+
+TEST_CASE("axial velocity is the speed toward the thin end, negative backward",
+          "[metrics][single]") {
+  const metrics::Track forward = steady_track(3.6, 0.5, 0.01, 200);
+  for (const double v : metrics::axial_velocities(forward, 7, 1))
+    CHECK_THAT(v, WithinRel(3.6, 0.01));
+  const metrics::Track backward = steady_track(-2.0, 0.0, 0.01, 50);
+  const std::vector<double> back = metrics::axial_velocities(backward, 7, 7);
+  CHECK(back.size() == 7);  // windows 0-7, 7-14, ..., 42-49
+  for (const double v : back) CHECK_THAT(v, WithinAbs(-2.0, 1e-12));
+}
+
+TEST_CASE("lag statistics of a steady turn: ballistic MSD, cos correlation; D_r of a line",
+          "[metrics][single]") {
+  const double omega = 0.2;  // rad/s
+  const metrics::Track track = steady_track(0.0, omega, 0.01, 500);
+  const metrics::LagStatistics lags = metrics::lag_statistics({track}, {10, 100});
+  CHECK_THAT(lags.lag_time[1], WithinAbs(1.0, 1e-12));
+  CHECK_THAT(lags.heading_msd[1], WithinAbs(omega * omega, 1e-12));
+  CHECK_THAT(lags.orientation_correlation[1], WithinAbs(std::cos(omega), 1e-12));
+  CHECK_THAT(lags.position_msd[0], WithinAbs(0.0, 1e-12));
+  const metrics::Track straight = steady_track(5.0, 0.0, 0.01, 300);
+  CHECK_THAT(metrics::lag_statistics({straight}, {50}).position_msd[0], WithinRel(6.25, 1e-9));
+  // MSD = c + 2 D t recovers D whatever the intercept.
+  CHECK_THAT(metrics::rotational_diffusion_fit(
+                 {0.07, 0.14, 0.21},
+                 {0.01 + 2 * 0.3 * 0.07, 0.01 + 2 * 0.3 * 0.14, 0.01 + 2 * 0.3 * 0.21}),
+             WithinRel(0.3, 1e-9));
+}
+
+TEST_CASE("runs and tumbles count only segments bounded on both sides", "[metrics][single]") {
+  // run (cut) | tumble x3 | run x2 | tumble (cut)
+  const std::vector<double> series = {5, 5, 0, 0.5, 0, 6, 7, 0};
+  const metrics::RunsAndTumbles r = metrics::runs_and_tumbles({series, {9, 9}}, 0.07, 1.0);
+  CHECK_THAT(r.running_fraction, WithinAbs(6.0 / 10.0, 1e-12));
+  CHECK(r.runs == 1);
+  CHECK(r.tumbles == 1);
+  CHECK_THAT(r.mean_run, WithinAbs(0.14, 1e-12));
+  CHECK_THAT(r.mean_tumble, WithinAbs(0.21, 1e-12));
+  CHECK(std::isnan(metrics::runs_and_tumbles({{9, 9, 9}}, 0.07, 1.0).mean_run));
+}
+
+TEST_CASE("quantile interpolates between order statistics", "[metrics][single]") {
+  CHECK_THAT(metrics::quantile({4, 1, 3, 2, 5}, 0.9), WithinAbs(4.6, 1e-12));
+  CHECK_THAT(metrics::quantile({7}, 0.5), WithinAbs(7.0, 1e-12));
+}
+
+TEST_CASE("two_peaks tells one peak from two", "[metrics][single]") {
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const auto density_of = [](const std::vector<double>& values, std::vector<double>& centres) {
+    std::vector<double> density(80, 0.0);
+    centres.clear();
+    for (int b = 0; b < 80; ++b) centres.push_back(-10.0 + 0.25 * (b + 0.5));
+    for (const double v : values) {
+      const int b = static_cast<int>(std::floor((v + 10.0) / 0.25));
+      if (b >= 0 && b < 80) density[static_cast<std::size_t>(b)] += 1.0;
+    }
+    return density;
+  };
+  std::vector<double> one, two, centres;
+  for (int i = 0; i < 20000; ++i) {
+    one.push_back(2.0 + 1.5 * normal(random));
+    two.push_back(i % 3 == 0 ? 6.0 + 0.5 * normal(random) : 0.7 * normal(random));
+  }
+  const metrics::TwoPeaks single = metrics::two_peaks(centres, density_of(one, centres));
+  CHECK_FALSE(single.bimodal());
+  CHECK_THAT(single.main, WithinAbs(2.0, 0.5));
+  const metrics::TwoPeaks pair = metrics::two_peaks(centres, density_of(two, centres));
+  CHECK(pair.bimodal());
+  CHECK_THAT(pair.main, WithinAbs(0.0, 0.3));
+  CHECK_THAT(pair.second, WithinAbs(6.0, 0.3));
+  CHECK(pair.valley < 0.05);
+}

@@ -1,0 +1,69 @@
+// `rodsort single` as a user meets it: a small study writes its tables, bad requests are refused
+// with a message that names what is wrong.
+
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "rodsort_program.hpp"
+#include "runner/csv_table.hpp"
+#include "runner/exit_code.hpp"
+#include "support/temp_directory.hpp"
+
+using namespace rodsort::runner;
+using rodsort::runner::testing::run_rodsort;
+using rodsort::testing::TempDirectory;
+
+namespace {
+
+const std::string kSingleRods = RODSORT_SOURCE_DIR "/scenarios/library/single-rods.yaml";
+
+}  // namespace
+
+TEST_CASE("rodsort single writes the study of one species", "[runner][single]") {
+  TempDirectory scratch;
+  const auto out = scratch / "study";
+  const auto result = run_rodsort({"single", kSingleRods, "--species", "A", "--rods", "3",
+                                   "--duration", "2", "--warmup", "0.5", "-o", out.string()},
+                                  scratch.path());
+  INFO(result.err);
+  REQUIRE(result.status == kExitOk);
+  CHECK_THAT(result.out, Catch::Contains("v0"));
+  const CsvTable summary = read_csv(out / "summary.csv");
+  REQUIRE(summary.rows.size() == 1);
+  const double v0 = summary.numbers(*summary.column("v0_mm_s"))[0];
+  // Rod A of the default model moves toward its thin end (docs/model.md).
+  CHECK(v0 > 5.0);
+  CHECK(summary.numbers(*summary.column("rods"))[0] == 3.0);
+  CHECK(read_csv(out / "per_rod.csv").rows.size() == 3);
+  const CsvTable lags = read_csv(out / "lags.csv");
+  const auto msd = lags.numbers(*lags.column("position_msd_mm2"));
+  REQUIRE(msd.size() > 10);
+  CHECK(msd.back() > msd.front());
+  const CsvTable distribution = read_csv(out / "axial_velocity.csv");
+  double integral = 0.0;
+  for (const double density : distribution.numbers(1)) integral += 0.5 * density;
+  CHECK(integral == Approx(1.0).epsilon(1e-9));
+}
+
+TEST_CASE("rodsort single refuses what it cannot measure", "[runner][single]") {
+  TempDirectory scratch;
+  const auto species =
+      run_rodsort({"single", kSingleRods, "--species", "B", "--duration", "2"}, scratch.path());
+  CHECK(species.status == kExitUsage);
+  CHECK_THAT(species.err, Catch::Contains("no species 'B'") && Catch::Contains("A, RnT"));
+  const auto sample =
+      run_rodsort({"single", kSingleRods, "--sample", "0.03", "--duration", "2"}, scratch.path());
+  CHECK(sample.status == kExitUsage);
+  CHECK_THAT(sample.err, Catch::Contains("metrics.window"));
+  const auto cell =
+      run_rodsort({"single", kSingleRods, "--cell", "10", "--duration", "2"}, scratch.path());
+  CHECK(cell.status == kExitUsage);
+  CHECK_THAT(cell.err, Catch::Contains("--cell"));
+  const auto short_run = run_rodsort({"single", kSingleRods, "--duration", "1"}, scratch.path());
+  CHECK(short_run.status == kExitUsage);
+  CHECK_THAT(short_run.err, Catch::Contains("--duration"));
+  const auto bad_key = run_rodsort(
+      {"single", kSingleRods, "--set", "drive.gapp=1.3", "--duration", "2"}, scratch.path());
+  CHECK(bad_key.status == kExitUsage);
+  CHECK_THAT(bad_key.err, Catch::Contains("drive.gap"));
+}
