@@ -8,6 +8,7 @@
 #include "bench/benchmark.hpp"
 #include "bench/standard_system.hpp"
 #include "engine/simulation.hpp"
+#include "metrics/sample_statistics.hpp"
 #include "metrics/single_rod.hpp"
 
 namespace rodsort::bench {
@@ -35,21 +36,6 @@ engine::Model single_rod(double dt, double kick_eps, int solver_iterations, std:
   model.species.push_back(rod_a_species(kick_eps));
   model.rods.push_back({0, 15.0, 15.0, 0.0});
   return model;
-}
-
-struct MeanAndError {
-  double mean, error;
-};
-
-MeanAndError mean_and_error(const std::vector<double>& values) {
-  double sum = 0.0;
-  for (const double v : values) sum += v;
-  const double mean = sum / static_cast<double>(values.size());
-  if (values.size() < 2) return {mean, 0.0};
-  double squares = 0.0;
-  for (const double v : values) squares += (v - mean) * (v - mean);
-  const double n = static_cast<double>(values.size());
-  return {mean, std::sqrt(squares / (n - 1.0) / n)};
 }
 
 std::string format(const char* pattern, double value) {
@@ -130,12 +116,12 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
   }
   AccuracyResult result;
   result.dt = dt;
-  const MeanAndError speed = mean_and_error(speeds);
-  const MeanAndError diffusion = mean_and_error(diffusions);
+  const metrics::SampleStatistics speed = metrics::sample_statistics(speeds);
+  const metrics::SampleStatistics diffusion = metrics::sample_statistics(diffusions);
   result.speed = speed.mean;
-  result.speed_error = speed.error;
+  result.speed_error = speed.standard_error;
   result.diffusion = diffusion.mean;
-  result.diffusion_error = diffusion.error;
+  result.diffusion_error = diffusion.standard_error;
   result.events_per_second = events / simulated;
   result.single_cpu_per_simulated = cpu / simulated;
   if (options.cost_time > 0.0) {

@@ -9,6 +9,7 @@
 
 #include "engine/simulation.hpp"
 #include "metrics/histogram.hpp"
+#include "metrics/sample_statistics.hpp"
 #include "metrics/single_particle.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/clocks.hpp"
@@ -26,25 +27,6 @@ constexpr int kFitMaxWindows = 10;
 constexpr int kLagMaxWindows = 100;
 /// Width of the bins of P(V_x) [mm/s].
 constexpr double kVelocityBin = 0.5;
-
-struct MeanAndError {
-  double mean = 0.0, error = 0.0, deviation = 0.0;
-};
-
-MeanAndError mean_and_error(const std::vector<double>& values) {
-  MeanAndError result;
-  if (values.empty()) return result;
-  double sum = 0.0;
-  for (const double v : values) sum += v;
-  const double n = static_cast<double>(values.size());
-  result.mean = sum / n;
-  if (values.size() < 2) return result;
-  double squares = 0.0;
-  for (const double v : values) squares += (v - result.mean) * (v - result.mean);
-  result.deviation = std::sqrt(squares / (n - 1.0));
-  result.error = result.deviation / std::sqrt(n);
-  return result;
-}
 
 std::string number(double value) { return json_number(value); }
 
@@ -183,7 +165,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   std::vector<metrics::Track> tracks;
   for (const RodResult& rod : rods) {
     every_velocity.insert(every_velocity.end(), rod.velocities.begin(), rod.velocities.end());
-    const MeanAndError speed = mean_and_error(rod.velocities);
+    const metrics::SampleStatistics speed = metrics::sample_statistics(rod.velocities);
     per_rod_speed.push_back(speed.mean);
     per_rod_deviation.push_back(speed.deviation);
     const metrics::LagStatistics fit = metrics::lag_statistics({rod.track}, fit_lags);
@@ -195,9 +177,9 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                                ? request.run_threshold
                                : 0.5 * metrics::quantile(every_velocity, 0.9);
   const metrics::RunsAndTumbles runs = metrics::runs_and_tumbles(series, window, threshold);
-  const MeanAndError speed = mean_and_error(per_rod_speed);
-  const MeanAndError diffusion = mean_and_error(per_rod_diffusion);
-  const MeanAndError spread = mean_and_error(every_velocity);
+  const metrics::SampleStatistics speed = metrics::sample_statistics(per_rod_speed);
+  const metrics::SampleStatistics diffusion = metrics::sample_statistics(per_rod_diffusion);
+  const metrics::SampleStatistics spread = metrics::sample_statistics(every_velocity);
   std::int64_t kicks = 0;
   for (const RodResult& rod : rods) kicks += rod.kicks;
   const metrics::Histogram histogram = velocity_histogram(every_velocity);
@@ -215,12 +197,12 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   std::snprintf(line, sizeof line,
                 "  v0        %.3f +- %.3f mm/s (mean over rods +- standard error)\n"
                 "  V_x       sd %.3f mm/s over windows, sd %.3f mm/s between rods' means\n",
-                speed.mean, speed.error, spread.deviation, speed.deviation);
+                speed.mean, speed.standard_error, spread.deviation, speed.deviation);
   out << line;
   std::snprintf(line, sizeof line,
                 "  D_r       %.4f +- %.4f rad^2/s (lags %g..%g s); persistence time 1/D_r %.3g s, "
                 "length v0/D_r %.3g mm\n",
-                diffusion.mean, diffusion.error, window, window * kFitMaxWindows,
+                diffusion.mean, diffusion.standard_error, window, window * kFitMaxWindows,
                 1.0 / diffusion.mean, speed.mean / diffusion.mean);
   out << line;
   std::snprintf(line, sizeof line,
@@ -274,11 +256,11 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                             number(request.duration),
                             number(window),
                             number(speed.mean),
-                            number(speed.error),
+                            number(speed.standard_error),
                             number(spread.deviation),
                             number(speed.deviation),
                             number(diffusion.mean),
-                            number(diffusion.error),
+                            number(diffusion.standard_error),
                             number(1.0 / diffusion.mean),
                             number(speed.mean / diffusion.mean),
                             number(threshold),
