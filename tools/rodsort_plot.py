@@ -545,14 +545,14 @@ def main(argv):
                                 "directory (sweep.csv)")
     allowed = STUDY_KINDS if study_mode else SWEEP_KINDS if sweep_mode else RUN_KINDS
     kinds = [k.strip() for k in arguments.what.split(",") if k.strip()]
+    kinds_of = {"run": RUN_KINDS, "sweep": SWEEP_KINDS, "single-particle study": STUDY_KINDS}
+    mode = "single-particle study" if study_mode else "sweep" if sweep_mode else "run"
     for kind in kinds:
         if kind not in allowed:
-            other = RUN_KINDS + STUDY_KINDS if sweep_mode else SWEEP_KINDS
-            hint = (f" ('{kind}' is drawn from a {'run' if sweep_mode else 'sweep'} directory)"
-                    if kind in other else "")
-            raise UsageError(f"--what: unknown kind '{kind}' for a "
-                            f"{'sweep' if sweep_mode else 'run'} directory{hint}; "
-                            f"expected some of: {', '.join(allowed)}")
+            owner = next((name for name, owned in kinds_of.items() if kind in owned), None)
+            hint = f" ('{kind}' is drawn from a {owner} directory)" if owner else ""
+            raise UsageError(f"--what: unknown kind '{kind}' for a {mode} directory{hint}; "
+                             f"expected some of: {', '.join(allowed)}")
     explicit = bool(kinds)
     kinds = kinds or list(allowed)
     formats = [f.strip() for f in arguments.format.split(",") if f.strip()]
