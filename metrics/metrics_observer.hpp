@@ -30,9 +30,9 @@ struct MetricsConfig {
 };
 
 struct MetricsRow {
-  double time = 0.0;        ///< of the later frame [s]
-  double window = 0.0;      ///< real time between the two frames [s]
-  double mean_speed = 0.0;  ///< over all rods [mm/s]
+  double time = 0.0;             ///< of the later frame [s]
+  double window = 0.0;           ///< real time between the two frames [s]
+  double mean_speed = 0.0;       ///< over all rods [mm/s]
   std::vector<bool> stationary;  ///< per rod, speed over the window below the threshold
   TrappingCounts counts;
   Efficiency efficiency;  ///< NaN everywhere when there is no trap

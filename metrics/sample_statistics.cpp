@@ -19,4 +19,22 @@ SampleStatistics sample_statistics(const std::vector<double>& values) {
   return result;
 }
 
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sx += x[i];
+    sy += y[i];
+    sxx += x[i] * x[i];
+    sxy += x[i] * y[i];
+  }
+  LineFit fit;
+  const double denominator = n * sxx - sx * sx;
+  if (denominator <= 0.0) return fit;
+  fit.slope = (n * sxy - sx * sy) / denominator;
+  fit.intercept = (sy - fit.slope * sx) / n;
+  fit.determined = true;
+  return fit;
+}
+
 }  // namespace rodsort::metrics

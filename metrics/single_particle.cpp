@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "metrics/kinematics.hpp"
+#include "metrics/sample_statistics.hpp"
 
 namespace rodsort::metrics {
 
@@ -65,17 +66,8 @@ LagStatistics lag_statistics(const std::vector<Track>& tracks, const std::vector
 
 double rotational_diffusion_fit(const std::vector<double>& lag_time,
                                 const std::vector<double>& heading_msd) {
-  const double n = static_cast<double>(lag_time.size());
-  double st = 0.0, sm = 0.0, stt = 0.0, stm = 0.0;
-  for (std::size_t i = 0; i < lag_time.size(); ++i) {
-    st += lag_time[i];
-    sm += heading_msd[i];
-    stt += lag_time[i] * lag_time[i];
-    stm += lag_time[i] * heading_msd[i];
-  }
-  const double denominator = n * stt - st * st;
-  if (lag_time.size() < 2 || denominator <= 0.0) return std::nan("");
-  return 0.5 * (n * stm - st * sm) / denominator;
+  const LineFit line = fit_line(lag_time, heading_msd);
+  return lag_time.size() >= 2 && line.determined ? 0.5 * line.slope : std::nan("");
 }
 
 RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity_series,

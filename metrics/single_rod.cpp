@@ -1,8 +1,10 @@
 #include "metrics/single_rod.hpp"
 
 #include <cassert>
+#include <numeric>
 
 #include "metrics/kinematics.hpp"
+#include "metrics/sample_statistics.hpp"
 
 namespace rodsort::metrics {
 
@@ -56,19 +58,15 @@ RotationalDiffusion rotational_diffusion(const std::vector<engine::Frame>& frame
     result.lag_times.push_back(time_sum / static_cast<double>(frames.size() - lag));
     result.mean_square.push_back(samples > 0 ? square_sum / samples : 0.0);
   }
-  // Least-squares line through (lag time, mean square).
-  const double n = static_cast<double>(result.lag_times.size());
-  double st = 0.0, sm = 0.0, stt = 0.0, stm = 0.0;
-  for (std::size_t i = 0; i < result.lag_times.size(); ++i) {
-    st += result.lag_times[i];
-    sm += result.mean_square[i];
-    stt += result.lag_times[i] * result.lag_times[i];
-    stm += result.lag_times[i] * result.mean_square[i];
-  }
-  const double denominator = n * stt - st * st;
-  const double slope = denominator > 0.0 ? (n * stm - st * sm) / denominator : 2.0 * sm / st;
+  // Least-squares line through (lag time, mean square); with a single lag, the ratio of the sums.
+  const LineFit line = fit_line(result.lag_times, result.mean_square);
+  const double slope =
+      line.determined
+          ? line.slope
+          : 2.0 * std::accumulate(result.mean_square.begin(), result.mean_square.end(), 0.0) /
+                std::accumulate(result.lag_times.begin(), result.lag_times.end(), 0.0);
   result.coefficient = slope / 2.0;
-  result.intercept = denominator > 0.0 ? (sm - slope * st) / n : 0.0;
+  result.intercept = line.intercept;
   return result;
 }
 

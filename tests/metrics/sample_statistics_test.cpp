@@ -15,3 +15,12 @@ TEST_CASE("sample statistics: mean, n-1 deviation, standard error", "[metrics]")
   CHECK(one.standard_error == 0.0);
   CHECK(rodsort::metrics::sample_statistics({}).mean == 0.0);
 }
+
+TEST_CASE("fit_line: least squares, and no line from a single x", "[metrics]") {
+  const auto line = rodsort::metrics::fit_line({1.0, 2.0, 3.0, 4.0}, {3.1, 4.9, 7.1, 8.9});
+  REQUIRE(line.determined);
+  CHECK_THAT(line.slope, WithinAbs(1.96, 1e-12));
+  CHECK_THAT(line.intercept, WithinAbs(1.1, 1e-12));
+  CHECK_FALSE(rodsort::metrics::fit_line({2.0}, {5.0}).determined);
+  CHECK_FALSE(rodsort::metrics::fit_line({2.0, 2.0}, {5.0, 6.0}).determined);
+}
