@@ -4,6 +4,7 @@
 // periodic solver and the collision kick all read it.
 
 #include "engine/materials.hpp"
+#include "engine/plate_roughness.hpp"
 
 namespace rodsort::engine {
 
@@ -18,6 +19,7 @@ struct BodyTag {
   const MaterialTable* materials;
   int rod = -1;                  ///< rod index for kRod and kImage
   int shift = -1;                ///< periodic shift index for kImage
+  const PlateRoughness* roughness = nullptr;  ///< kBase and kLid: the surface, null when flat
 };
 
 /// Makes Bullet combine friction and restitution by looking the pair up in the bodies' material

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/materials.hpp"
+#include "engine/plate_roughness.hpp"
 #include "engine/rod_shape.hpp"
 
 namespace rodsort::engine {
@@ -55,6 +56,7 @@ struct Wall {
 struct Model {
   double box_x = 0.0, box_y = 0.0;  ///< periodic cell [0, box_x) x [0, box_y) [mm]
   Drive drive{};
+  Roughness roughness{};
   std::vector<Species> species;
   std::vector<RodInit> rods;
   std::vector<Wall> walls;

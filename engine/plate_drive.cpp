@@ -21,9 +21,9 @@ double PlateDrive::lid_surface_z(double time) const { return base_surface_z(time
 
 void PlateDrive::place(btRigidBody& base, btRigidBody& lid, double time, bool reset) const {
   btTransform base_transform = base.getWorldTransform();
-  base_transform.getOrigin().setZ(base_surface_z(time) - kPlateHalfThickness);
+  base_transform.getOrigin().setZ(base_surface_z(time) + base_reach_ - kPlateHalfThickness);
   btTransform lid_transform = lid.getWorldTransform();
-  lid_transform.getOrigin().setZ(lid_surface_z(time) + kPlateHalfThickness);
+  lid_transform.getOrigin().setZ(lid_surface_z(time) - lid_reach_ + kPlateHalfThickness);
   base.setWorldTransform(base_transform);
   lid.setWorldTransform(lid_transform);
   if (reset) {

@@ -1,5 +1,6 @@
 #pragma once
-// Random streams: one xoshiro256** generator per rod and per purpose (collision kick, white noise),
+// Random streams: one xoshiro256** generator per rod and per purpose (collision kick, white noise;
+// also one per rough plate, drawn once when its surface is made),
 // seeded from the scenario seed through splitmix64. Streams are independent of each other, so
 // adding a consumer of randomness never changes the numbers another one draws, and their whole
 // state is four words that a checkpoint stores.
@@ -12,7 +13,7 @@
 
 namespace rodsort::engine {
 
-enum class StreamPurpose : std::uint64_t { kCollisionKick = 1, kWhiteNoise = 2, kPlacement = 3 };
+enum class StreamPurpose : std::uint64_t { kCollisionKick = 1, kWhiteNoise = 2, kPlacement = 3, kRoughness = 4 };
 
 class RandomStream {
  public:

@@ -14,6 +14,11 @@
 // holds at most four points and a rod lying on its side touches with all of its spheres (their
 // envelope is a cone, tangent to the plate along a line), hence one manifold per sphere rather than
 // one per rod.
+//
+// A rough plate (plate_roughness.hpp) is met through its tangent plane under each sphere's centre:
+// the normal is that of the surface h(x, y) at the centre's (x, y), and the depth is the sphere's
+// distance to that plane. For the slopes allowed (at most 0.3 rad) and spheres small against the
+// wavelength this is the exact contact up to terms of order radius x slope x curvature.
 #include "engine/rod_plate_collision.hpp"
 
 #include <BulletCollision/BroadphaseCollision/btDispatcher.h>
@@ -22,7 +27,10 @@
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 
+#include <cmath>
+
 #include "engine/body_tag.hpp"
+#include "engine/plate_roughness.hpp"
 #include "engine/rod_geometry.hpp"
 
 namespace rodsort::engine {
@@ -31,7 +39,8 @@ RodPlateCollision::RodPlateCollision(const btCollisionAlgorithmConstructionInfo&
                                      const btCollisionObjectWrapper* rod, bool rod_is_body0)
     : btCollisionAlgorithm(info),
       rod_is_body0_(rod_is_body0),
-      manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr) {}
+      manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr),
+      clear_(manifolds_.size(), 0) {}
 
 RodPlateCollision::~RodPlateCollision() {
   for (btPersistentManifold* manifold : manifolds_) {
@@ -55,10 +64,14 @@ void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
       static_cast<const btBoxShape*>(plate->getCollisionShape())->getHalfExtentsWithMargin().z();
   const double plate_z = plate->getWorldTransform().getOrigin().z();
   const double surface = base ? plate_z + half_thickness : plate_z - half_thickness;
+  const btVector3& origin = pose.getOrigin();
+  if (tag->roughness != nullptr) {
+    process_rough(*tag->roughness, base, surface, geometry, pose, rod, plate, result);
+    return;
+  }
   // The normal on the plate (body B of every manifold here), pointing toward the rod.
   const btVector3 normal(0.0, 0.0, base ? 1.0 : -1.0);
 
-  const btVector3& origin = pose.getOrigin();
   int kept = 0;  // manifolds that exist and may need releasing below
   for (std::size_t i = 0; i < manifolds_.size(); ++i) {
     // The height of pose * (axial, 0, 0), written out; the rest of the centre only on contact.
@@ -98,6 +111,75 @@ void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
     const double r = geometry.radius[i];
     const double depth = base ? (center_z - r) - surface : surface - (center_z + r);
     if (depth > 0.0) {
+      m_dispatcher->releaseManifold(manifold);
+      manifold = nullptr;
+      --kept;
+    }
+  }
+}
+
+void RodPlateCollision::process_rough(const PlateRoughness& roughness, bool base,
+                                      double box_surface, const RodGeometry& geometry,
+                                      const btTransform& pose, const btCollisionObjectWrapper* rod,
+                                      const btCollisionObjectWrapper* plate,
+                                      btManifoldResult* result) {
+  // The plate's box stands out by the roughness's reach (plate_drive.hpp).
+  const double surface = base ? box_surface - roughness.reach() : box_surface + roughness.reach();
+  const double side = base ? 1.0 : -1.0;
+  const btVector3 axis = pose.getBasis().getColumn(0);
+  const btVector3& origin = pose.getOrigin();
+  struct Contact {
+    btVector3 normal, point;
+    double depth;
+  };
+  const auto contact_of = [&](std::size_t i) {
+    const btVector3 center = origin + axis * geometry.axial[i];
+    const PlateRoughness::Surface local = roughness.at(center.x(), center.y());
+    // Normal on the plate toward the rod: the surface's upward normal, turned down for the lid.
+    const btVector3 normal =
+        btVector3(-local.slope_x, -local.slope_y, 1.0).normalized() * side;
+    const btVector3 on_surface(center.x(), center.y(), surface + local.height);
+    const double depth = normal.dot(center - on_surface) - geometry.radius[i];
+    return Contact{normal, center - normal * (geometry.radius[i] + depth), depth};
+  };
+  // The depth is n_z (z_centre - surface - h) - r with h <= reach and n_z >= 1 / sqrt(1 + g^2),
+  // g the steepest slope: a sphere whose gap to the nominal surface exceeds
+  // reach + r (sqrt(1 + g^2) - 1) is clear without evaluating the field.
+  const double tilt_excess = std::sqrt(1.0 + roughness.max_slope() * roughness.max_slope()) - 1.0;
+  int kept = 0;
+  for (std::size_t i = 0; i < manifolds_.size(); ++i) {
+    btPersistentManifold*& manifold = manifolds_[i];
+    const double center_z = axis.z() * geometry.axial[i] + origin.z();
+    const double gap = side * (center_z - surface) - geometry.radius[i];
+    if (gap > roughness.reach() + tilt_excess * geometry.radius[i]) {
+      clear_[i] = 1;
+      kept += manifold != nullptr;
+      continue;
+    }
+    const Contact contact = contact_of(i);
+    clear_[i] = contact.depth > 0.0 ? 1 : 0;
+    if (clear_[i]) {
+      kept += manifold != nullptr;
+      continue;
+    }
+    if (!manifold) {
+      manifold =
+          m_dispatcher->getNewManifold(rod->getCollisionObject(), plate->getCollisionObject());
+    }
+    if (rod_is_body0_) {
+      result->setShapeIdentifiersA(-1, static_cast<int>(i));
+    } else {
+      result->setShapeIdentifiersB(-1, static_cast<int>(i));
+    }
+    result->setPersistentManifold(manifold);
+    result->refreshContactPoints();
+    result->addContactPoint(contact.normal, contact.point, contact.depth);
+    result->refreshContactPoints();
+  }
+  // Released after the new ones were made, as on a flat plate (below).
+  for (std::size_t i = 0; kept > 0 && i < manifolds_.size(); ++i) {
+    btPersistentManifold*& manifold = manifolds_[i];
+    if (manifold && clear_[i]) {
       m_dispatcher->releaseManifold(manifold);
       manifold = nullptr;
       --kept;

@@ -5,6 +5,12 @@
 #include <vector>
 
 class btPersistentManifold;
+class btTransform;
+
+namespace rodsort::engine {
+class PlateRoughness;
+struct RodGeometry;
+}  // namespace rodsort::engine
 
 namespace rodsort::engine {
 
@@ -26,8 +32,14 @@ class RodPlateCollision : public btCollisionAlgorithm {
   void getAllContactManifolds(btManifoldArray& manifolds) override;
 
  private:
+  void process_rough(const PlateRoughness& roughness, bool base, double box_surface,
+                     const RodGeometry& geometry, const btTransform& pose,
+                     const btCollisionObjectWrapper* rod, const btCollisionObjectWrapper* plate,
+                     btManifoldResult* result);
+
   bool rod_is_body0_;
   std::vector<btPersistentManifold*> manifolds_;  ///< one per sphere, null while it is clear
+  std::vector<char> clear_;  ///< rough plates: per sphere, clear of the plate at this step
 };
 
 }  // namespace rodsort::engine

@@ -68,10 +68,22 @@ double largest_rod_reach(const Model& model) {
   return reach;
 }
 
+std::unique_ptr<PlateRoughness> make_roughness(const Model& model, int plate) {
+  const double slope = plate == 0 ? model.roughness.base_slope : model.roughness.lid_slope;
+  if (slope == 0.0) return nullptr;
+  return std::make_unique<PlateRoughness>(slope, model.roughness.wavelength, model.box_x,
+                                          model.box_y, model.seed, plate);
+}
+
+double reach_of(const std::unique_ptr<PlateRoughness>& roughness) {
+  return roughness ? roughness->reach() : 0.0;
+}
+
 }  // namespace
 
 struct Simulation::Impl {
   Model model;
+  std::unique_ptr<PlateRoughness> base_roughness, lid_roughness;  ///< null for a flat plate
   PlateDrive drive;
   PeriodicCell cell;
 
@@ -113,7 +125,9 @@ struct Simulation::Impl {
 
   explicit Impl(Model m)
       : model(std::move(m)),
-        drive(model.drive),
+        base_roughness(make_roughness(model, 0)),
+        lid_roughness(make_roughness(model, 1)),
+        drive(model.drive, reach_of(base_roughness), reach_of(lid_roughness)),
         cell(model.box_x, model.box_y, 2.0 * largest_rod_reach(model) + kReachMargin) {
     install_material_table_callbacks();
     gContactBreakingThreshold = kContactBreakingFactor;
@@ -156,7 +170,7 @@ struct Simulation::Impl {
 
   State initial_state() const {
     State state;
-    const double rest_height = drive.base_surface_z(0.0) + 0.01;
+    const double rest_height = drive.base_surface_z(0.0) + reach_of(base_roughness) + 0.01;
     for (std::size_t i = 0; i < model.rods.size(); ++i) {
       const RodInit& init = model.rods[i];
       const Species& species = model.species.at(static_cast<std::size_t>(init.species));
@@ -226,7 +240,9 @@ struct Simulation::Impl {
     info.m_restitutionVelocityThreshold = 2.5 * kGravity * model.dt;
 
     base_tag = {BodyKind::kBase, MaterialTable::kBase, &model.materials};
+    base_tag.roughness = base_roughness.get();
     lid_tag = {BodyKind::kLid, MaterialTable::kLid, &model.materials};
+    lid_tag.roughness = lid_roughness.get();
     base = make_kinematic_plate(base_tag);
     lid = make_kinematic_plate(lid_tag);
     drive.place(*base, *lid, state.time, true);

@@ -55,6 +55,41 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
   return std::nullopt;
 }
 
+/// A rough plate must fit its modes in the cell, and its highest points should leave the thickest
+/// rod room between base and lid.
+void check_roughness(const ScenarioSpec& spec, const engine::Model& model,
+                     Diagnostics& diagnostics) {
+  double reach = 0.0;
+  for (int plate = 0; plate < 2; ++plate) {
+    const Sourced<double>& slope = plate == 0 ? spec.base_slope : spec.lid_slope;
+    if (slope.value == 0.0) continue;
+    try {
+      reach += engine::PlateRoughness(slope.value, model.roughness.wavelength, model.box_x,
+                                      model.box_y, model.seed, plate)
+                   .reach();
+    } catch (const std::invalid_argument&) {
+      diagnostics.error(spec.roughness_wavelength.where, spec.roughness_wavelength.path,
+                        "a wavelength of " + mm(model.roughness.wavelength) +
+                            " is too long for the cell (box.size): fewer than " +
+                            std::to_string(engine::PlateRoughness::kModes) +
+                            " distinct waves fit; expected a wavelength of a few mm at most");
+      return;
+    }
+  }
+  double thickest = 0.0;
+  for (const engine::Species& species : model.species) {
+    thickest = std::max(thickest, 2.0 * species.shape.max_radius);
+  }
+  const double clearance = model.drive.gap - thickest;
+  if (reach > 0.0 && clearance > 0.0 && reach >= 0.5 * clearance) {
+    const Sourced<double>& slope = spec.base_slope.value > 0.0 ? spec.base_slope : spec.lid_slope;
+    diagnostics.warning(slope.where, slope.path,
+                        "the rough plates' highest points can stand out by up to " + mm(reach) +
+                            " together, half or more of the " + mm(clearance) +
+                            " between the thickest rod and the gap (drive.gap)");
+  }
+}
+
 void check_fits_gap(const engine::RodShape& shape, const SpeciesSpec& species,
                     const ScenarioSpec& spec, Diagnostics& diagnostics) {
   const double gap = spec.gap.value;
@@ -219,6 +254,9 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   model.drive.amplitude =
       spec.amplitude ? spec.amplitude->value
                      : engine::Drive::amplitude_from_gamma(spec.gamma->value, spec.frequency.value);
+  model.roughness.base_slope = spec.base_slope.value;
+  model.roughness.lid_slope = spec.lid_slope.value;
+  model.roughness.wavelength = spec.roughness_wavelength.value;
   if (model.drive.gamma() <= 1.0) {
     const SourceLocation& where = spec.amplitude ? spec.amplitude->where : spec.gamma->where;
     diagnostics.warning(where, spec.amplitude ? spec.amplitude->path : spec.gamma->path,
@@ -276,6 +314,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
     out.material = model.materials.index_of(species.material.value);
     model.species.push_back(std::move(out));
   }
+  check_roughness(spec, model, diagnostics);
 
   std::optional<trap::VTrap> v_trap;
   if (spec.trap) {

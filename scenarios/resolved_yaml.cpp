@@ -184,6 +184,12 @@ std::string resolved_yaml(const Scenario& scenario) {
   w.key("gap").number(spec.gap.value);
   w.end_map();
 
+  w.key("roughness").begin_map();
+  w.key("base_slope").number(spec.base_slope.value);
+  w.key("lid_slope").number(spec.lid_slope.value);
+  w.key("wavelength").number(spec.roughness_wavelength.value);
+  w.end_map();
+
   w.key("population").begin_map();
   if (spec.area_fraction) {
     w.key("area_fraction").number(spec.area_fraction->value);

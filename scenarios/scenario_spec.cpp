@@ -221,6 +221,11 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
   }
   spec.gap = drive.real("gap");
 
+  SectionReader roughness = top.section("roughness");
+  spec.base_slope = roughness.real("base_slope");
+  spec.lid_slope = roughness.real("lid_slope");
+  spec.roughness_wavelength = roughness.real("wavelength");
+
   SectionReader population = top.section("population");
   spec.trap_area_ratio = population.real("trap_area_ratio");
   spec.area_fraction = population.optional_real("area_fraction");

@@ -77,6 +77,8 @@ struct ScenarioSpec {
   std::optional<Sourced<double>> gamma;
   std::optional<Sourced<double>> amplitude;  ///< [mm]
   Sourced<double> gap;                       ///< [mm]
+  Sourced<double> base_slope, lid_slope;     ///< RMS slopes of the plates [rad]
+  Sourced<double> roughness_wavelength;      ///< [mm]
 
   Sourced<double> trap_area_ratio;
   std::optional<Sourced<double>> area_fraction;

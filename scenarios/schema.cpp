@@ -49,6 +49,17 @@ std::vector<KeyInfo> scenario_keys() {
        "w: height of the lid above the base. Rods stop propelling when their thick end no longer "
        "reaches the lid."},
 
+      {"roughness", V::section, "", "", {}, {},
+       "Rough plates: a fixed random height field on the base and the lid (docs/model.md, "
+       "\"Rough plates\"). The paper's plates are flat."},
+      {"roughness.base_slope", V::real, "rad", "0", closed(0, 0.3), {},
+       "RMS slope of the base's surface; 0 is flat."},
+      {"roughness.lid_slope", V::real, "rad", "0", closed(0, 0.3), {},
+       "RMS slope of the lid's surface; 0 is flat."},
+      {"roughness.wavelength", V::real, "mm", "0.25", positive(), {},
+       "Mean wavelength of the height field (wavenumbers spread over 0.5-1.5 times 2 pi / "
+       "wavelength); RMS height = slope x wavelength / (2 pi), about."},
+
       {"population", V::section, "", "", {}, {}, "How many rods `count: auto` makes."},
       {"population.trap_area_ratio", V::real, "", "1.2", positive(), {},
        "r = phi_r / F: total projected area of the species counted `auto`, divided by the trap "

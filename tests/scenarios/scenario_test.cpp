@@ -41,6 +41,9 @@ void check_same_model(const engine::Model& a, const engine::Model& b) {
   CHECK(a.drive.frequency == b.drive.frequency);
   CHECK(a.drive.amplitude == b.drive.amplitude);
   CHECK(a.drive.gap == b.drive.gap);
+  CHECK(a.roughness.base_slope == b.roughness.base_slope);
+  CHECK(a.roughness.lid_slope == b.roughness.lid_slope);
+  CHECK(a.roughness.wavelength == b.roughness.wavelength);
   CHECK(a.dt == b.dt);
   CHECK(a.seed == b.seed);
   CHECK(a.solver_iterations == b.solver_iterations);
@@ -201,6 +204,7 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
       "name: roundtrip\n"
       "seed: 7\n"
       "drive: {amplitude: 0.05}\n"
+      "roughness: {base_slope: 0.04, wavelength: 0.3}\n"
       "trap: {angle: 75, direction: 30, wall_thickness: 0.7}\n"
       "species:\n"
       "  - {name: A, fraction: 0.5, noise: {white_Dr: 0.3}}\n"
