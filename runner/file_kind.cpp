@@ -1,22 +1,22 @@
 #include "runner/file_kind.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <array>
+#include <optional>
+
+#include "scenarios/source_node.hpp"
 
 namespace rodsort::runner {
 
 FileKind guess_file_kind(const std::filesystem::path& path) {
-  try {
-    const YAML::Node root = YAML::LoadFile(path.string());
-    if (!root.IsMap()) return FileKind::kUnknown;
-    if (root["grid"] || root["base"]) return FileKind::kSweep;
-    constexpr std::array kScenarioKeys = {"species", "trap", "run", "box", "drive", "output"};
-    for (const char* key : kScenarioKeys) {
-      if (root[key]) return FileKind::kScenario;
-    }
-  } catch (const YAML::Exception&) {
-    // Its own errors are reported by whoever reads it properly.
+  // Its own errors are reported by whoever reads it properly; the same bounded reader keeps this
+  // guess from hanging on a pipe or reading a device without end.
+  scenarios::Diagnostics ignored;
+  const std::optional<scenarios::SourceNode> root = scenarios::read_yaml_file(path, ignored);
+  if (!root || !root->is_map()) return FileKind::kUnknown;
+  if (root->find("grid") || root->find("base")) return FileKind::kSweep;
+  constexpr std::array kScenarioKeys = {"species", "trap", "run", "box", "drive", "output"};
+  for (const char* key : kScenarioKeys) {
+    if (root->find(key)) return FileKind::kScenario;
   }
   return FileKind::kUnknown;
 }

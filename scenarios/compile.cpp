@@ -47,8 +47,19 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
     }
     case ShapeSpec::Kind::spheres: {
       engine::RodProfile profile;
-      for (const auto& [axial, radius] : shape.spheres.value)
+      for (const auto& [axial, radius] : shape.spheres.value) {
+        if (!profile.spheres.empty() && axial <= profile.spheres.back().axial) {
+          diagnostics.error(shape.spheres.where, shape.spheres.path,
+                            "sphere " + std::to_string(profile.spheres.size()) +
+                                " is at axial position " + mm(axial) + ", not beyond sphere " +
+                                std::to_string(profile.spheres.size() - 1) + " at " +
+                                mm(profile.spheres.back().axial) +
+                                "; list the spheres from the thick end to the thin end, the "
+                                "axial position growing");
+          return std::nullopt;
+        }
         profile.spheres.push_back({axial, radius});
+      }
       return profile;
     }
   }

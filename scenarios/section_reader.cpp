@@ -192,6 +192,15 @@ Sourced<std::string> SectionReader::text(std::string_view key) {
         "expected a name of letters, digits, '.', '_' or '-', got " + node.describe());
     return out;
   }
+  // A name becomes a directory name (255 bytes at most), with a sweep point's labels after it.
+  constexpr std::size_t kMaxNameLength = 100;
+  if (node.scalar.size() > kMaxNameLength) {
+    diagnostics_.error(node.where, out.path,
+                       "expected a name of at most " + std::to_string(kMaxNameLength) +
+                           " characters (it names the run's directory), got one of " +
+                           std::to_string(node.scalar.size()));
+    return out;
+  }
   out.value = node.scalar;
   return out;
 }

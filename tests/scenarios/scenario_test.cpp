@@ -1,7 +1,11 @@
 #include "scenarios/scenario.hpp"
 
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "engine/units.hpp"
@@ -284,4 +288,30 @@ TEST_CASE("a missing file is an error, not an exception", "[scenario]") {
   CHECK_FALSE(result.ok());
   CHECK_THAT(format_diagnostics(result.diagnostics),
              Catch::Contains("no/such/file.yaml: cannot open the file"));
+}
+
+TEST_CASE("what is not a regular file of bounded size is refused without reading it", "[scenario]") {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / "rodsort-scenario-file-kinds";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const auto message_of = [](const std::filesystem::path& path) {
+    const LoadResult result = load_scenario(path);
+    CHECK_FALSE(result.ok());
+    return format_diagnostics(result.diagnostics);
+  };
+  CHECK_THAT(message_of(folder), Catch::Contains(": is a directory; expected a YAML file"));
+  // A device that never ends, and a pipe that no one writes to, would hang a reader.
+  CHECK_THAT(message_of("/dev/zero"), Catch::Contains("/dev/zero: is not a regular file"));
+  const std::filesystem::path fifo = folder / "pipe.yaml";
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK_THAT(message_of(fifo), Catch::Contains("pipe.yaml: is not a regular file"));
+  // A file one byte beyond the bound; its content would be valid YAML.
+  const std::filesystem::path large = folder / "large.yaml";
+  {
+    std::ofstream out(large);
+    out << "name: large\n" << std::string(16'000'000, '#') << "\n";
+  }
+  CHECK_THAT(message_of(large), Catch::Contains("large.yaml: larger than 16 MB"));
+  std::filesystem::remove_all(folder);
 }
