@@ -26,6 +26,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "engine/body_tag.hpp"
@@ -349,10 +350,31 @@ struct Simulation::Impl {
     configuration.reset();
   }
 
+  /// A rod whose centre is no longer between base and lid (by more than a gap's margin), or not
+  /// finite, means the model broke down (validation bounds what moves a rod per step, so this
+  /// should not happen); stopping says so instead of running on with nonsense.
+  [[noreturn]] void stop_escaped_rod(std::size_t rod, const btVector3& where) const {
+    std::ostringstream message;
+    message << "rod " << rod << " left the space between base and lid at t = " << time
+            << " s (its centre at x = " << where.x() << ", y = " << where.y()
+            << ", z = " << where.z() << " mm; base at z = " << drive.base_surface_z(time)
+            << " mm, lid at z = " << drive.lid_surface_z(time)
+            << " mm): the simulation broke down and was stopped";
+    throw std::runtime_error(message.str());
+  }
+
   void wrap_and_refresh_images() {
+    const double margin = model.drive.gap;
+    const double lowest = drive.base_surface_z(time) - margin;
+    const double highest = drive.lid_surface_z(time) + margin;
     for (std::size_t i = 0; i < rods.size(); ++i) {
       btRigidBody& body = *rods[i];
       btTransform transform = body.getWorldTransform();
+      const btVector3& centre = transform.getOrigin();
+      if (!(centre.z() > lowest && centre.z() < highest) || !std::isfinite(centre.x()) ||
+          !std::isfinite(centre.y())) {
+        stop_escaped_rod(i, centre);
+      }
       const auto crossed = cell.wrap_count(transform.getOrigin().x(), transform.getOrigin().y());
       if (crossed[0] != 0 || crossed[1] != 0) {
         const btVector3 jump(static_cast<double>(crossed[0]) * cell.box_x(),

@@ -7,6 +7,7 @@
 #include "engine/units.hpp"
 #include "scenarios/number_text.hpp"
 #include "scenarios/placement.hpp"
+#include "scenarios/plausibility.hpp"
 #include "trap/v_trap.hpp"
 
 namespace rodsort::scenarios {
@@ -122,6 +123,14 @@ void check_fits_gap(const engine::RodShape& shape, const SpeciesSpec& species,
 /// Steps in an interval; reports an interval shorter than dt, and warns when it is not a multiple.
 std::int64_t to_steps(const Sourced<double>& interval, double dt, Diagnostics& diagnostics) {
   const double exact = interval.value / dt;
+  if (exact > kMaxSteps) {
+    diagnostics.error(interval.where, interval.path,
+                      format_real(interval.value) + " s is " + format_real(exact) +
+                          " steps of run.dt = " + format_real(dt) + " s; at most " +
+                          format_real(kMaxSteps) +
+                          " steps are accepted (some three CPU-hours per rod at the fastest)");
+    return 1;
+  }
   const auto steps = static_cast<std::int64_t>(std::llround(exact));
   if (steps < 1) {
     diagnostics.error(interval.where, interval.path,
@@ -326,6 +335,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
     model.species.push_back(std::move(out));
   }
   check_roughness(spec, model, diagnostics);
+  check_step_travel(spec, model, diagnostics);
 
   std::optional<trap::VTrap> v_trap;
   if (spec.trap) {

@@ -7,6 +7,8 @@
 //   - fewer than 20 time steps per drive period (the plates' motion would be sampled too coarsely
 //     for the impacts that drive the rods);
 //   - more rods than random placement can fit (area fraction above kMaxPlacementFraction);
+//   - plates, kicks or white noise that move a sphere by more than half the thinnest radius in a
+//     step, and runs of more than kMaxSteps steps (scenarios/plausibility.hpp);
 //   - outputs that fall outside the run or between time steps.
 
 #include <optional>

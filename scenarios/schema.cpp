@@ -31,13 +31,15 @@ std::vector<KeyInfo> scenario_keys() {
        "Seed of every random stream: initial placement, collision kicks, white noise."},
 
       {"box", V::section, "", "", {}, {}, "The periodic cell."},
-      {"box.size", V::real_pair, "mm", "[86.85, 86.85]", positive(), {},
+      {"box.size", V::real_pair, "mm", "[86.85, 86.85]", half_open(0, 1.0e6), {},
        "Sides of the cell in x and y, periodic in both; one number for a square. Paper: 19.3 rod "
-       "lengths."},
+       "lengths. At most 1e6 mm, where doubles still resolve a position to 1e-10 mm, a "
+       "ten-millionth of a rod's travel in one step."},
 
       {"drive", V::section, "", "", {}, {}, "Vertical vibration of base and lid."},
-      {"drive.frequency", V::real, "Hz", "200", positive(), {},
-       "f: base height z_b(t) = A cos(2 pi f t), lid at z_b(t) + gap."},
+      {"drive.frequency", V::real, "Hz", "200", half_open(0, 5.0e5), {},
+       "f: base height z_b(t) = A cos(2 pi f t), lid at z_b(t) + gap. At most 5e5 Hz: 20 steps "
+       "per period at the shortest run.dt."},
       {"drive.gamma", V::real, "", "7", positive(), {},
        "Dimensionless peak acceleration Gamma = A (2 pi f)^2 / g. Give gamma or amplitude, not "
        "both.",
@@ -98,12 +100,13 @@ std::vector<KeyInfo> scenario_keys() {
        "Explicit spheres [axial position, radius], the axial position growing from the thick to "
        "the thin end (any origin).",
        "none"},
-      {"species[].density", V::real, "g/mm^3", "8.5e-3", positive(), {},
-       "Density of the rod's material (brass)."},
+      {"species[].density", V::real, "g/mm^3", "8.5e-3", closed(1.0e-6, 0.03), {},
+       "Density of the rod's material (brass). From air's (1.2e-6) to beyond osmium's (0.0226), "
+       "the densest element."},
       {"species[].material", V::text, "", "rod", {}, {},
        "Contact material of the rods in the `materials` pair table; a new name starts with the "
        "values of `rod`."},
-      {"species[].count", V::integer, "", "auto", non_negative(), {"auto"},
+      {"species[].count", V::integer, "", "auto", closed(0, 1.0e6), {"auto"},
        "Number of rods, or `auto`: the species counted auto share the area set by `population` "
        "(split by `fraction`)."},
       {"species[].fraction", V::real, "", "", half_open(0, 1), {},
@@ -153,8 +156,9 @@ std::vector<KeyInfo> scenario_keys() {
 
       {"run", V::section, "", "", {}, {}, "Length and time step of the simulation."},
       {"run.duration", V::real, "s", "300", positive(), {}, "Simulated time."},
-      {"run.dt", V::real, "s", "1.0e-4", positive(), {},
-       "Time step; at least 20 steps per drive period."},
+      {"run.dt", V::real, "s", "1.0e-4", closed(1.0e-7, 1.0), {},
+       "Time step; at least 20 steps per drive period. Nothing that moves a rod may move a "
+       "sphere by more than half the thinnest radius in one step (plates, kick, white noise)."},
       {"run.solver_iterations", V::integer, "", "10", closed(1, 1000), {},
        "Iterations of Bullet's contact solver per step; the rods' speed and D_r depend on it "
        "by 10-20% (docs/performance.md, section 4)."},

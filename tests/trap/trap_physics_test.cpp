@@ -100,7 +100,7 @@ TEST_CASE("a single rod escapes a 160° trap", "[trap][physics]") {
     // Up to 5 s: the rod slides along an arm (45 mm) at ~12 mm/s and leaves.
     for (int k = 0; k < 50 && !escaped; ++k) {
       sim.advance(1000);
-      const engine::RodFrame& rod = sim.frame().rods[0];
+      const engine::RodFrame rod = sim.frame().rods[0];
       escaped = !trap.contains(rod.position) && (rod.position - trap.apex()).norm() > 20.0;
     }
     CHECK(escaped);
