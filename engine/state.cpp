@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/fingerprint.hpp"
+
 namespace rodsort::engine {
 namespace {
 
@@ -76,12 +78,7 @@ State read_state(std::istream& in) {
 std::uint64_t hash_state(const State& state) {
   std::ostringstream bytes;
   write_state(bytes, state);
-  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
-  for (const char c : bytes.str()) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
+  return fingerprint(bytes.str());
 }
 
 }  // namespace rodsort::engine

@@ -1,16 +1,30 @@
 #include "runner/checkpoint.hpp"
 
 #include <charconv>
+#include <cstdio>
+#include <string_view>
 #include <sstream>
 #include <stdexcept>
 
+#include "engine/fingerprint.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/json_text.hpp"
 
 namespace rodsort::runner {
 namespace {
 
-constexpr const char* kMagic = "rodsort-checkpoint 1";
+constexpr const char* kMagic = "rodsort-checkpoint 2";
+constexpr const char* kOldMagic = "rodsort-checkpoint 1";
+// The file ends with this line: "checksum " and 16 hex digits of the fingerprint of every byte
+// before it.
+constexpr std::string_view kChecksumPrefix = "checksum ";
+constexpr std::size_t kChecksumLine = 9 + 16 + 1;
+
+std::string hex(std::uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
 constexpr const char* kFileBytesPrefix = "bytes:";
 
 double parse_double(const std::string& text, const std::string& key) {
@@ -31,6 +45,15 @@ std::uint64_t parse_unsigned(const std::string& text, const std::string& key) {
   return value;
 }
 
+std::uint64_t parse_hex(const std::string& text, const std::string& key) {
+  std::uint64_t value = 0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value, 16);
+  if (result.ec != std::errc() || result.ptr != text.data() + text.size()) {
+    throw std::runtime_error("bad value '" + text + "' for " + key);
+  }
+  return value;
+}
+
 }  // namespace
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& checkpoint) {
@@ -44,16 +67,39 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
   out << "sessions " << checkpoint.sessions << '\n';
   out << "started_at " << checkpoint.started_at << '\n';
   out << "metrics_replay_offset " << checkpoint.metrics_replay_offset << '\n';
+  out << "scenario_fingerprint " << hex(checkpoint.scenario_fingerprint) << '\n';
   out << "state\n";
   engine::write_state(out, checkpoint.state);
-  write_file_atomically(path, out.str());
+  std::string bytes = out.str();
+  bytes += std::string(kChecksumPrefix) + hex(engine::fingerprint(bytes)) + "\n";
+  write_file_atomically(path, bytes);
 }
 
 Checkpoint read_checkpoint(const std::filesystem::path& path) {
   try {
-    std::istringstream in(read_file(path), std::ios::binary);
+    std::string bytes = read_file(path);
+    if (bytes.rfind(kOldMagic, 0) == 0) {
+      throw std::runtime_error("written by an older rodsort (format 1, without a checksum); "
+                               "resume it with that version, or start the run again");
+    }
+    if (bytes.rfind(kMagic, 0) != 0) throw std::runtime_error("not a checkpoint");
+    const std::size_t body = bytes.size() >= kChecksumLine ? bytes.size() - kChecksumLine : 0;
+    const std::string_view trailer = std::string_view(bytes).substr(body);
+    if (trailer.size() != kChecksumLine || trailer.substr(0, kChecksumPrefix.size()) != kChecksumPrefix) {
+      throw std::runtime_error("cut short: its closing checksum line is missing");
+    }
+    const std::string recorded(trailer.substr(kChecksumPrefix.size(), 16));
+    const std::string actual = hex(engine::fingerprint(std::string_view(bytes).substr(0, body)));
+    if (recorded != actual) {
+      throw std::runtime_error("its checksum does not match its content (" + actual +
+                               ", recorded " + recorded +
+                               "): the file was changed or damaged after it was written, and "
+                               "resuming from it would not continue the run");
+    }
+    bytes.resize(body);
+    std::istringstream in(bytes, std::ios::binary);
     std::string line;
-    if (!std::getline(in, line) || line != kMagic) throw std::runtime_error("not a checkpoint");
+    std::getline(in, line);
     Checkpoint checkpoint;
     bool has_state = false;
     while (std::getline(in, line)) {
@@ -76,6 +122,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
         checkpoint.sessions = static_cast<int>(parse_unsigned(value, key));
       } else if (key == "metrics_replay_offset") {
         checkpoint.metrics_replay_offset = parse_unsigned(value, key);
+      } else if (key == "scenario_fingerprint") {
+        checkpoint.scenario_fingerprint = parse_hex(value, key);
       } else if (key == "started_at") {
         checkpoint.started_at = value;
       } else {

@@ -5,8 +5,11 @@
 // if the run wrote more frames before it was killed. Written atomically, so a crash while writing
 // one leaves the previous checkpoint.
 //
-// Layout: a text header of "key value" lines opened by "rodsort-checkpoint 1" and closed by a line
-// "state", followed by engine::write_state's bytes.
+// Layout: a text header of "key value" lines opened by "rodsort-checkpoint 2" and closed by a line
+// "state", followed by engine::write_state's bytes, and a last line "checksum <16 hex digits>", the
+// fingerprint of everything before it: a checkpoint changed or damaged after it was written is
+// refused. The header also records the fingerprint of scenario.resolved.yaml as the run wrote it,
+// so that a resumed run can refuse an edited scenario.
 
 #include <cstdint>
 #include <filesystem>
@@ -27,10 +30,13 @@ struct Checkpoint {
   /// Offset in rods.csv of the first frame the metrics observer must see again on resume: the
   /// frames from there on cover the observer's window.
   std::uint64_t metrics_replay_offset = 0;
+  /// engine::fingerprint of scenario.resolved.yaml as the run wrote it.
+  std::uint64_t scenario_fingerprint = 0;
 };
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& checkpoint);
-/// Throws std::runtime_error naming the file when it is missing, truncated or not a checkpoint.
+/// Throws std::runtime_error naming the file when it is missing, truncated, changed after it was
+/// written (its checksum), or not a checkpoint.
 Checkpoint read_checkpoint(const std::filesystem::path& path);
 
 }  // namespace rodsort::runner

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/fingerprint.hpp"
 #include "engine/simulation.hpp"
 #include "metrics/rods_csv.hpp"
 #include "runner/append_file.hpp"
@@ -70,6 +71,15 @@ class RunSession {
 
   int resume() {
     const Checkpoint checkpoint = read_checkpoint(directory_ / kCheckpointFile);
+    const std::filesystem::path resolved = directory_ / kResolvedScenarioFile;
+    if (engine::fingerprint(read_file(resolved)) != checkpoint.scenario_fingerprint) {
+      throw std::runtime_error(
+          resolved.string() +
+          " has changed since the run wrote it (its fingerprint differs from the one in " +
+          kCheckpointFile +
+          "); a run resumes only with the scenario it started with: restore the file, or start "
+          "a new run from the edited scenario");
+    }
     open_files();
     for (AppendFile* file : files()) {
       const std::string name = file->path().filename().string();
@@ -280,6 +290,7 @@ class RunSession {
     checkpoint.cpu_s = total_cpu_s();
     checkpoint.sessions = sessions_;
     checkpoint.started_at = started_at_;
+    checkpoint.scenario_fingerprint = engine::fingerprint(plan_.resolved_yaml);
     checkpoint.metrics_replay_offset =
         recent_frames_.empty() ? rods_->size() : recent_frames_.front().offset;
     write_checkpoint(directory_ / kCheckpointFile, checkpoint);

@@ -81,13 +81,24 @@ int resume_run_directory(const std::filesystem::path& directory, const RunOption
     err << "rodsort: " << directory.string() << " holds no run to resume (no such directory)\n";
     return kExitUsage;
   }
+  // Checked before the lock is taken, so that a directory without a run is left as it was (the
+  // lock would create run.lock in it), and again under the lock.
+  const auto holds_resumable_run = [&] {
+    return std::filesystem::exists(directory / kRunRecordFile) &&
+           std::filesystem::exists(directory / kCheckpointFile);
+  };
+  if (!holds_resumable_run()) {
+    err << "rodsort: " << directory.string()
+        << " holds no run to resume (no run.json and checkpoint.bin)\n";
+    return kExitUsage;
+  }
   const auto lock = RunLock::acquire(directory);
   if (!lock) {
     err << "rodsort: another process is running in " << directory.string() << '\n';
     return kExitFailure;
   }
   const auto record = read_run_record(directory);
-  if (!record || !std::filesystem::exists(directory / kCheckpointFile)) {
+  if (!record || !holds_resumable_run()) {
     err << "rodsort: " << directory.string()
         << " holds no run to resume (no run.json and checkpoint.bin)\n";
     return kExitUsage;

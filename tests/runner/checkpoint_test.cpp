@@ -63,5 +63,26 @@ TEST_CASE("a damaged checkpoint is refused with its name", "[runner][checkpoint]
   runner::write_file_atomically(path, whole.substr(0, whole.size() - 20));
   CHECK_THROWS_WITH(runner::read_checkpoint(path), Catch::Contains("checkpoint.bin"));
   runner::write_file_atomically(path, whole.substr(0, whole.find("state\n")));
-  CHECK_THROWS_WITH(runner::read_checkpoint(path), Catch::Contains("truncated before the state"));
+  CHECK_THROWS_WITH(runner::read_checkpoint(path), Catch::Contains("cut short"));
+}
+
+TEST_CASE("a checkpoint changed after it was written is refused by its checksum",
+          "[runner][checkpoint]") {
+  TempDirectory directory;
+  const auto path = directory / "checkpoint.bin";
+  runner::write_checkpoint(path, sample_checkpoint());
+  const std::string whole = runner::read_file(path);
+  REQUIRE_NOTHROW(runner::read_checkpoint(path));
+  // Any one byte of the state, or of the header, changed: both still parse, neither may resume.
+  for (const std::size_t at : {whole.find("state\n") + 10, whole.find("sessions") + 9}) {
+    std::string changed = whole;
+    changed[at] = static_cast<char>(changed[at] ^ 0x01);
+    runner::write_file_atomically(path, changed);
+    CHECK_THROWS_WITH(runner::read_checkpoint(path),
+                      Catch::Contains("checkpoint.bin") &&
+                          Catch::Contains("checksum does not match its content"));
+  }
+  // The format before checksums is named, not misread.
+  runner::write_file_atomically(path, "rodsort-checkpoint 1\nstate\n");
+  CHECK_THROWS_WITH(runner::read_checkpoint(path), Catch::Contains("an older rodsort"));
 }

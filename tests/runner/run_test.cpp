@@ -248,3 +248,35 @@ TEST_CASE("one process at a time runs in a run directory", "[runner][run]") {
   CHECK_THAT(err.str(), Catch::Contains("another process is running in"));
   CHECK(read_run_record(run)->status == RunStatus::kComplete);
 }
+
+TEST_CASE("an edited resolved scenario is refused on resume, not run", "[runner][run][resume]") {
+  TempDirectory directory;
+  const auto crashed = directory / "crashed";
+  RunOptions crash = silent();
+  crash.after_step = [](std::int64_t step) {
+    if (step == 2000) throw std::runtime_error("simulated crash");
+  };
+  CHECK_THROWS(run_tiny(crashed, crash));
+  // A shorter run, still a valid scenario: resuming it would end early with exit 0.
+  const auto resolved = crashed / kResolvedScenarioFile;
+  std::string text = read_file(resolved);
+  const std::size_t at = text.find("duration: 0.35");
+  REQUIRE(at != std::string::npos);
+  text.replace(at, 14, "duration: 0.28");
+  write_file_atomically(resolved, text);
+  const std::string rods_before = read_file(crashed / kRodsCsvFile);
+  std::ostringstream err;
+  CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err),
+                    Catch::Contains("has changed since the run wrote it"));
+  CHECK(read_file(crashed / kRodsCsvFile) == rods_before);
+}
+
+TEST_CASE("resuming a directory without a run leaves it as it was", "[runner][run][resume]") {
+  TempDirectory directory;
+  const auto empty = directory / "empty";
+  std::filesystem::create_directories(empty);
+  std::ostringstream err;
+  CHECK(resume_run_directory(empty, silent(), err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("holds no run to resume"));
+  CHECK(std::filesystem::is_empty(empty));
+}
