@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/command.hpp"
+#include "app/number_checks.hpp"
 #include "render/plot_script.hpp"
 #include "runner/exit_code.hpp"
 
@@ -59,7 +60,7 @@ Command add_plot_command(CLI::App& app) {
                            "Comma-separated: png, svg, pdf (default: png,svg)");
   plot_command
       ->add_option("--tau", options->tau, "Window of P(dtheta) [s] (default 0.07, the paper's)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   return {plot_command, [options] { return plot(*options); }};
 }
 

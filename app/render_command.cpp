@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/command.hpp"
+#include "app/number_checks.hpp"
 #include "render/run_render.hpp"
 #include "render/scene.hpp"
 #include "runner/exit_code.hpp"
@@ -52,7 +53,7 @@ Command add_render_command(CLI::App& app) {
   render->add_flag("--movie", request->movie,
                    "Also make RUN_DIR/render/movie.mp4 of every frame (needs ffmpeg)");
   render->add_option("--every", request->movie_every, "Movie: take every N-th frame (default 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   render->add_option("--fps", request->movie_fps, "Movie: frames per second (default 20)")
       ->check(CLI::Range(1.0, 240.0));
   render

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "app/command.hpp"
+#include "app/number_checks.hpp"
 #include "runner/single_particle.hpp"
 
 namespace rodsort::app {
@@ -24,24 +25,24 @@ Command add_single_command(CLI::App& app) {
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   single->add_option("--duration", request->duration, "Measured simulated time per rod [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
   single->add_option("--warmup", request->warmup, "Simulated time before measuring [s]")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_number())
       ->capture_default_str();
   single
       ->add_option("--sample", request->sample_interval,
                    "Interval between recorded frames [s]; divides metrics.window")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
   single->add_option("--cell", request->cell, "Side of each rod's periodic cell [mm]")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number())
       ->capture_default_str();
   single
       ->add_option("--run-threshold", request->run_threshold,
                    "A window runs when V_x exceeds this [mm/s] (default: half the 90th "
                    "percentile of V_x)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   single->add_option("-o,--output", request->output,
                      "Directory for summary.csv, per_rod.csv, axial_velocity.csv, lags.csv");
   return {single,

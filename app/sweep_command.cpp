@@ -17,7 +17,7 @@ Command add_sweep_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   sweep->add_option("-o,--output", request->output, "Sweep directory (default: runs/<sweep name>)");
   sweep->add_option("-j,--jobs", request->jobs, "Points run at once (default: one per core)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 1024));
   sweep->add_flag("--force", request->force,
                   "Rerun points whose run directory holds a different scenario");
   sweep->add_flag("--dry-run", request->dry_run,

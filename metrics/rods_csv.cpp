@@ -59,11 +59,12 @@ void RodsCsvWriter::write(const engine::Frame& frame) {
 }
 
 RodsCsvReader::RodsCsvReader(std::istream& in, std::string file_name,
-                             std::vector<std::string> species_names)
+                             std::vector<std::string> species_names, long header_line)
     : in_(in),
       file_name_(std::move(file_name)),
       species_names_(std::move(species_names)),
-      fixed_species_(!species_names_.empty()) {}
+      fixed_species_(!species_names_.empty()),
+      line_number_(header_line - 1) {}
 
 bool RodsCsvReader::fail(long line, int column, const std::string& message) {
   error_ = file_name_;

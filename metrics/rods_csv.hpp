@@ -40,9 +40,11 @@ class RodsCsvWriter {
 class RodsCsvReader {
  public:
   /// file_name is only used in messages. species_names: the run's species in index order, a name
-  /// not among them is an error; when empty, each new name gets the next index.
+  /// not among them is an error; when empty, each new name gets the next index. header_line: the
+  /// line of the file that the stream's first line (the header) stands for, so that a frame read
+  /// back from the middle of a file, behind a copy of the header, is reported at its own line.
   RodsCsvReader(std::istream& in, std::string file_name,
-                std::vector<std::string> species_names = {});
+                std::vector<std::string> species_names = {}, long header_line = 1);
 
   /// The next frame; false at the end of the file or at the first error (see error()).
   bool next(engine::Frame& frame);

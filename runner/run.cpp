@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <csignal>
 #include <cstring>
@@ -230,10 +231,12 @@ class RunSession {
   }
 
   /// Feeds the observer one frame as rods.csv holds it, and remembers where the frame starts.
+  /// `first_line`: the line of rods.csv where the frame starts, for messages (0: not known).
   std::optional<metrics::MetricsRow> observe_stored(const std::string& frame_text,
-                                                    std::uint64_t offset) {
+                                                    std::uint64_t offset, long first_line = 0) {
     std::istringstream in(std::string(metrics::kRodsCsvHeader) + "\n" + frame_text);
-    metrics::RodsCsvReader reader(in, kRodsCsvFile, plan_.metrics.species_names);
+    metrics::RodsCsvReader reader(in, kRodsCsvFile, plan_.metrics.species_names,
+                                  first_line > 0 ? first_line - 1 : 1);
     engine::Frame stored;
     if (!reader.next(stored)) {
       throw std::runtime_error("cannot read back a frame of rods.csv: " + reader.error());
@@ -261,21 +264,25 @@ class RunSession {
     }
     std::size_t frame_start = offset;
     double frame_time = 0.0;
-    for (std::size_t line_start = offset; line_start < text.size();) {
+    // Line numbers of the file, for messages about a damaged frame.
+    long line = 1 + static_cast<long>(std::count(text.begin(), text.begin() + offset, '\n'));
+    long frame_line = line;
+    for (std::size_t line_start = offset; line_start < text.size(); ++line) {
       std::size_t line_end = text.find('\n', line_start);
       line_end = line_end == std::string::npos ? text.size() : line_end + 1;
       const double time = leading_time(std::string_view(text).substr(line_start));
       if (line_start == frame_start) {
         frame_time = time;
       } else if (time != frame_time) {
-        observe_stored(text.substr(frame_start, line_start - frame_start), frame_start);
+        observe_stored(text.substr(frame_start, line_start - frame_start), frame_start, frame_line);
         frame_start = line_start;
+        frame_line = line;
         frame_time = time;
       }
       line_start = line_end;
     }
     if (frame_start < text.size()) {
-      observe_stored(text.substr(frame_start), frame_start);
+      observe_stored(text.substr(frame_start), frame_start, frame_line);
     }
   }
 

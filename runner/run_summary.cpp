@@ -5,6 +5,7 @@
 #include "metrics/time_series.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/run_directory.hpp"
+#include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
 
 namespace rodsort::runner {
@@ -28,6 +29,12 @@ RunSummary summarize_run(const std::filesystem::path& run_directory) {
   const auto record = read_run_record(run_directory);
   if (!record) return summary;
   summary.status = to_string(record->status);
+  // run.json says "running" until the run ends; a run killed outright (SIGKILL, power cut) never
+  // ends, so only a held lock says it is still going.
+  if (record->status == RunStatus::kRunning &&
+      std::filesystem::exists(run_directory / kRunLockFile) && RunLock::acquire(run_directory)) {
+    summary.status = "stopped";
+  }
   summary.simulated_s = record->simulated_s;
   summary.wall_s = record->wall_s;
   summary.cpu_per_simulated_s = record->cpu_per_simulated_second();

@@ -11,7 +11,9 @@
 namespace rodsort::runner {
 
 struct RunSummary {
-  std::string status = "pending";  ///< run.json's status, or "pending" when there is none
+  /// run.json's status, "stopped" for a run that says "running" but that no process holds (it was
+  /// killed; `rodsort run --resume` continues it), or "pending" when there is no record.
+  std::string status = "pending";
   double simulated_s = 0.0;        ///< [s]
   double wall_s = 0.0;             ///< [s]
   double cpu_per_simulated_s = 0.0;

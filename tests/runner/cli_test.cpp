@@ -13,6 +13,7 @@
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/run_record.hpp"
+#include "runner/run_summary.hpp"
 #include "support/temp_directory.hpp"
 
 using namespace rodsort::runner;
@@ -48,6 +49,14 @@ TEST_CASE("bad arguments exit with status 2", "[runner][cli]") {
   CHECK(run_rodsort({"run", "missing.yaml"}, scratch.path()).status == kExitUsage);
   CHECK(run_rodsort({"run", kTiny, "--resume", scratch.path().string()}, scratch.path()).status ==
         kExitUsage);
+  // A refused number is named with its bound in a line, not a 309-digit range.
+  const auto no_jobs = run_rodsort({"sweep", kTiny, "-j", "0"}, scratch.path());
+  CHECK(no_jobs.status == kExitUsage);
+  CHECK_THAT(no_jobs.err, Catch::Contains("--jobs: Value 0 not in range 1 to 1024"));
+  const auto negative = run_rodsort({"single", kTiny, "--duration", "-1"}, scratch.path());
+  CHECK(negative.status == kExitUsage);
+  CHECK_THAT(negative.err, Catch::Contains("--duration: expected a number > 0, got -1"));
+  CHECK(negative.err.size() < 200);
 }
 
 TEST_CASE("validate prints the resolved scenario, or the errors", "[runner][cli]") {
@@ -118,6 +127,8 @@ TEST_CASE("a run killed with SIGKILL leaves readable files and resumes", "[runne
   const auto killed = read_run_record(run);
   REQUIRE(killed.has_value());
   CHECK(killed->status == RunStatus::kRunning);  // it had no chance to say otherwise
+  // ... but no process holds the run any more, and its summary (sweep.csv, summarize) says so.
+  CHECK(rodsort::runner::summarize_run(run).status == "stopped");
   const auto frames = rodsort::metrics::read_rods_csv(rods);
   CHECK(frames.error.empty());
   CHECK(frames.frames.size() >= 2);

@@ -280,3 +280,24 @@ TEST_CASE("resuming a directory without a run leaves it as it was", "[runner][ru
   CHECK_THAT(err.str(), Catch::Contains("holds no run to resume"));
   CHECK(std::filesystem::is_empty(empty));
 }
+
+TEST_CASE("a damaged frame read back on resume is named at its line of rods.csv",
+          "[runner][run][resume]") {
+  TempDirectory directory;
+  const auto crashed = directory / "crashed";
+  RunOptions crash = silent();
+  crash.after_step = [](std::int64_t step) {
+    if (step == 2000) throw std::runtime_error("simulated crash");
+  };
+  CHECK_THROWS(run_tiny(crashed, crash));
+  // The checkpoint at step 1050 keeps the header and four frames of four rods: lines 1-17. The
+  // last of them, read back to refill the metrics' window, gets a word for a number.
+  std::vector<std::string> lines = lines_of(crashed / kRodsCsvFile);
+  REQUIRE(lines.size() > 17);
+  lines[16].replace(lines[16].rfind(',') + 1, std::string::npos, "oops");
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  write_file_atomically(crashed / kRodsCsvFile, text);
+  std::ostringstream err;
+  CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err), Catch::Contains("rods.csv:17:"));
+}
