@@ -39,5 +39,6 @@ function(rodsort_layer_tests name)
   target_include_directories(${name}_tests PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
   target_compile_definitions(${name}_tests PRIVATE
     RODSORT_SOURCE_DIR="${PROJECT_SOURCE_DIR}" RODSORT_BINARY_DIR="${PROJECT_BINARY_DIR}")
-  catch_discover_tests(${name}_tests TEST_PREFIX "${name}: " PROPERTIES TIMEOUT 600)
+  catch_discover_tests(${name}_tests TEST_PREFIX "${name}: " PROPERTIES TIMEOUT 600
+                       ENVIRONMENT "LSAN_OPTIONS=suppressions=${PROJECT_SOURCE_DIR}/tests/lsan.supp")
 endfunction()

@@ -1,12 +1,16 @@
 #include "scenarios/source_node.hpp"
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <system_error>
 
 namespace rodsort::scenarios {
@@ -151,6 +155,68 @@ class Converter {
 
 std::string quote(const std::string& text) { return "\"" + text + "\""; }
 
+struct ControlCharacter {
+  SourceLocation where;
+  unsigned byte;
+};
+
+/// YAML is text: of the C0 controls only tab, line feed and carriage return may appear (YAML 1.2,
+/// section 5.1). yaml-cpp loops without end, allocating, on a NUL in some places, so such a byte
+/// is refused before the parser sees it.
+std::optional<ControlCharacter> find_control_character(std::string_view text,
+                                                       const std::string& source) {
+  int line = 1;
+  int column = 1;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte < 0x20 && c != '\t' && c != '\n' && c != '\r') || byte == 0x7f) {
+      return ControlCharacter{{source, line, column}, byte};
+    }
+    if (c == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return std::nullopt;
+}
+
+/// Records where each document starts, and nothing else: counts the documents of a text.
+class DocumentStarts final : public YAML::EventHandler {
+ public:
+  std::vector<YAML::Mark> marks;
+
+  void OnDocumentStart(const YAML::Mark& mark) override { marks.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+/// Whether a line of `text` starts with the document marker `---` (alone or before a space).
+bool has_document_marker(std::string_view text) {
+  for (std::size_t line = 0; line < text.size();) {
+    const std::string_view rest = text.substr(line);
+    if (rest.rfind("---", 0) == 0 &&
+        (rest.size() == 3 || rest[3] == ' ' || rest[3] == '\n' || rest[3] == '\r' ||
+         rest[3] == '\t')) {
+      return true;
+    }
+    const std::size_t newline = text.find('\n', line);
+    if (newline == std::string_view::npos) break;
+    line = newline + 1;
+  }
+  return false;
+}
+
 }  // namespace
 
 const SourceNode::Entry* SourceNode::find_entry(std::string_view key) const {
@@ -202,9 +268,27 @@ std::string SourceNode::describe() const {
 
 std::optional<SourceNode> parse_yaml(std::string_view text, const std::string& source,
                                      Diagnostics& diagnostics) {
-  std::vector<YAML::Node> documents;
+  if (const auto found = find_control_character(text, source)) {
+    char code[8];
+    std::snprintf(code, sizeof code, "0x%02x", found->byte);
+    diagnostics.error(found->where, "",
+                      std::string("a control character (byte ") + code +
+                          ") where YAML allows only text; is this a scenario file?");
+    return std::nullopt;
+  }
+  // The first document is loaded on its own: yaml-cpp's LoadAll can loop without end, adding
+  // empty documents, on text it cannot read (its issue 1319, fixed after the 0.7 that Debian
+  // ships). Then the documents are counted, stopping at the second.
+  YAML::Node root;
+  std::vector<YAML::Mark> document_starts;
   try {
-    documents = YAML::LoadAll(std::string(text));
+    root = YAML::Load(std::string(text));
+    std::istringstream stream{std::string(text)};
+    YAML::Parser parser(stream);
+    DocumentStarts starts;
+    while (starts.marks.size() < 2 && parser.HandleNextDocument(starts)) {
+    }
+    document_starts = std::move(starts.marks);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's own message for this is "bad file".
     diagnostics.error(location_of(e.mark, source, {source, 0, 0}), "",
@@ -216,21 +300,31 @@ std::optional<SourceNode> parse_yaml(std::string_view text, const std::string& s
                       "YAML syntax error: " + e.msg);
     return std::nullopt;
   }
-  if (documents.empty()) {  // empty, or only comments
+  if (document_starts.size() > 1) {
+    const YAML::Mark& second = document_starts[1];
+    // A second document begins with a `---` line; without one, yaml-cpp has found a "document"
+    // in text it could not read.
+    const bool marked = second.pos > document_starts[0].pos &&
+                        has_document_marker(text.substr(0, static_cast<std::size_t>(second.pos) + 3));
+    if (!marked) {
+      diagnostics.error(location_of(second, source, {source, 0, 0}), "",
+                        "YAML syntax error: the text cannot be read as YAML from here");
+    } else {
+      diagnostics.error(location_of(second, source, {source, 0, 0}), "",
+                        "a second YAML document; the text must hold one (remove the `---` and "
+                        "what follows, or put it in a file of its own)");
+    }
+    return std::nullopt;
+  }
+  if (document_starts.empty()) {  // empty, or only comments
     SourceNode nothing;
     nothing.where = {source, 1, 1};
     return nothing;
   }
-  if (documents.size() > 1) {
-    diagnostics.error(location_of(documents[1].Mark(), source, {source, 0, 0}), "",
-                      "a second YAML document; the text must hold one (remove the `---` and "
-                      "what follows, or put it in a file of its own)");
-    return std::nullopt;
-  }
   Converter converter(source, diagnostics);
-  SourceNode root = converter.convert(documents.front(), {source, 1, 1});
+  SourceNode tree = converter.convert(root, {source, 1, 1});
   if (converter.refused()) return std::nullopt;
-  return root;
+  return tree;
 }
 
 std::optional<SourceNode> read_yaml_file(const std::filesystem::path& path,
