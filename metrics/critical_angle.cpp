@@ -1,27 +1,58 @@
 #include "metrics/critical_angle.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 namespace rodsort::metrics {
 
 CriticalAngle critical_angle(std::vector<SweepPoint> points, int plateau_points) {
   CriticalAngle result;
-  if (points.size() < 2) {
-    result.reason =
-        "a critical angle needs at least two angles, got " + std::to_string(points.size());
+  const int plateau_size = std::max(1, plateau_points);
+  const std::size_t needed = static_cast<std::size_t>(plateau_size) + 2;
+  if (points.size() < needed) {
+    result.reason = "a critical angle needs at least " + std::to_string(needed) + " angles (" +
+                    std::to_string(plateau_size) +
+                    " for the low-angle plateau and two to bracket the drop), got " +
+                    std::to_string(points.size());
     return result;
   }
   std::sort(points.begin(), points.end(),
             [](const SweepPoint& a, const SweepPoint& b) { return a.angle < b.angle; });
-  const int used = std::clamp(plateau_points, 1, static_cast<int>(points.size()));
-  for (int i = 0; i < used; ++i) result.plateau += points[i].eta;
-  result.plateau /= used;
+  for (int i = 0; i < plateau_size; ++i) result.plateau += points[i].eta;
+  result.plateau /= plateau_size;
   result.half = 0.5 * result.plateau;
-  if (!(result.plateau > 0.0)) {
-    result.reason =
-        "eta at the smallest angles is not positive: nothing is trapped, so there is "
-        "no plateau to fall from";
+  if (!(result.plateau >= kMinPlateauEta)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "eta at the smallest angles is %.3g, below %.2g: their traps have not filled "
+                  "(are the runs long enough?), so there is no plateau to fall from",
+                  result.plateau, kMinPlateauEta);
+    result.reason = text;
     return result;
+  }
+  // The plateau is the mean over the second half of each run: if eta was still rising there,
+  // the plateau is too low and theta_c may be too.
+  for (int i = 0; i < plateau_size; ++i) {
+    const SweepPoint& point = points[static_cast<std::size_t>(i)];
+    if (std::isnan(point.duration)) continue;
+    if (std::isnan(point.levelled_at) || point.levelled_at > 0.5 * point.duration) {
+      char text[240];
+      if (std::isnan(point.levelled_at)) {
+        std::snprintf(text, sizeof text,
+                      "at %g, eta never reached 90%% of its final level in the runs (%g s): the "
+                      "plateau, and theta_c with it, may be too low; run longer",
+                      point.angle, point.duration);
+      } else {
+        std::snprintf(text, sizeof text,
+                      "at %g, eta was still rising in the second half of the runs (it reached "
+                      "90%% of its final level at %.3g s of %g s): the plateau, and theta_c "
+                      "with it, may be too low; run longer",
+                      point.angle, point.levelled_at, point.duration);
+      }
+      result.caution = text;
+      break;
+    }
   }
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const SweepPoint& a = points[i];

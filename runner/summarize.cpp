@@ -1,7 +1,9 @@
 #include "runner/summarize.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <string>
@@ -76,8 +78,21 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
     group_keys.push_back(key);
     group_columns.push_back(*table.column(key));
   }
-  // group values -> angle -> eta of each complete point (seeds)
-  std::map<std::vector<std::string>, std::map<double, std::vector<double>>> groups;
+  const auto levelled_column = table.column("eta_time_to_90_s");
+  const auto duration_column = table.column("simulated_s");
+  const auto number_at = [](const std::vector<std::string>& row,
+                            std::optional<std::size_t> column) {
+    const auto value = column ? parse_number(row[*column]) : std::nullopt;
+    return value ? *value : std::numeric_limits<double>::quiet_NaN();
+  };
+  // The complete points (seeds) at one angle.
+  struct AngleRuns {
+    std::vector<double> etas;
+    double levelled_at = 0.0;  ///< the latest time to 90% (NaN once one never got there)
+    double duration = std::numeric_limits<double>::infinity();  ///< the shortest run
+  };
+  // group values -> angle -> its runs
+  std::map<std::vector<std::string>, std::map<double, AngleRuns>> groups;
   for (const auto& row : table.rows) {
     std::vector<std::string> group;
     for (const std::size_t column : group_columns) group.push_back(row[column]);
@@ -85,7 +100,14 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
     const auto angle = parse_number(row[angle_column]);
     const auto eta = eta_column ? parse_number(row[*eta_column]) : std::nullopt;
     if (row[status_column] != "complete" || !angle || !eta || !std::isfinite(*eta)) continue;
-    angles[*angle].push_back(*eta);
+    AngleRuns& runs = angles[*angle];
+    runs.etas.push_back(*eta);
+    // A run that never reached 90% makes the angle's time NaN for good.
+    const double levelled_at = number_at(row, levelled_column);
+    runs.levelled_at = std::isnan(levelled_at) || std::isnan(runs.levelled_at)
+                           ? std::numeric_limits<double>::quiet_NaN()
+                           : std::max(runs.levelled_at, levelled_at);
+    runs.duration = std::min(runs.duration, number_at(row, duration_column));
   }
 
   CsvTable result;
@@ -98,10 +120,15 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
          "plateau\n";
   for (const auto& [group, angles] : groups) {
     std::vector<metrics::SweepPoint> points;
-    for (const auto& [angle, etas] : angles) {
+    for (const auto& [angle, runs] : angles) {
       double sum = 0.0;
-      for (const double eta : etas) sum += eta;
-      points.push_back({angle, sum / static_cast<double>(etas.size())});
+      for (const double eta : runs.etas) sum += eta;
+      metrics::SweepPoint point{angle, sum / static_cast<double>(runs.etas.size())};
+      if (std::isfinite(runs.duration)) {
+        point.duration = runs.duration;
+        point.levelled_at = runs.levelled_at;
+      }
+      points.push_back(point);
     }
     const metrics::CriticalAngle critical = metrics::critical_angle(points);
     std::vector<std::string> row = group;
@@ -116,7 +143,7 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
         row.push_back(std::isnan(value) ? "nan" : json_number(value));
       }
       row.push_back(std::to_string(points.size()));
-      row.push_back("");
+      row.push_back(critical.caution.empty() ? "" : "caution: " + critical.caution);
     } else {
       std::snprintf(line, sizeof line, "  %s: not found (%s)",
                     group_label(group_keys, group).c_str(), critical.reason.c_str());
@@ -125,6 +152,9 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
       row.push_back(critical.reason);
     }
     out << line << '\n';
+    if (critical.found && !critical.caution.empty()) {
+      out << "    caution: " << critical.caution << '\n';
+    }
     result.rows.push_back(std::move(row));
   }
   write_file_atomically(sweep_directory / "critical_angle.csv", csv_text(result));

@@ -39,6 +39,7 @@ STUDY_KINDS = ("axial-velocity", "msd")
 # The Okabe-Ito palette in render/palette.cpp's order.
 SPECIES_COLOURS = ("#0072B2", "#E69F00", "#009E73", "#D55E00", "#CC79A7", "#56B4E9", "#F0E442")
 PLATEAU_POINTS = 3  # as metrics::critical_angle's default
+MIN_PLATEAU_ETA = 0.1  # metrics::kMinPlateauEta
 
 
 class PlotError(Exception):
@@ -109,8 +110,15 @@ def metrics_species(table):
     return [column[len("purity_"):] for column in table.header if column.startswith("purity_")]
 
 
-def run_label(path):
-    return os.path.basename(os.path.normpath(path))
+def run_label(path, runs=()):
+    """The run directory's name; with its parent's when another of `runs` has the same name
+    (points of two sweeps, fig2e/angle-80_seed-1 and fig2f/angle-80_seed-1)."""
+    def name(p):
+        return os.path.basename(os.path.normpath(p))
+    if sum(1 for other in runs if name(other) == name(path)) > 1:
+        parent = os.path.basename(os.path.dirname(os.path.normpath(path)))
+        return f"{parent}/{name(path)}"
+    return name(path)
 
 
 def wrap_angle(angle):
@@ -166,20 +174,38 @@ def orientation_changes(run_dir, tau):
 
 
 def critical_angle(points):
-    """theta_c of (angle, eta) points, as metrics::critical_angle: a dict, or None with a reason."""
-    points = sorted(points)
-    if len(points) < 2:
-        return None, f"a critical angle needs at least two angles, got {len(points)}"
-    used = min(PLATEAU_POINTS, len(points))
-    plateau = sum(eta for _, eta in points[:used]) / used
+    """theta_c of (angle, eta[, levelled_at, duration]) points, as metrics::critical_angle: a
+    dict (with a "caution", empty when nothing is known against it), or None with a reason."""
+    points = sorted((tuple(p) + (math.nan, math.nan))[:4] for p in points)
+    needed = PLATEAU_POINTS + 2
+    if len(points) < needed:
+        return None, (f"a critical angle needs at least {needed} angles ({PLATEAU_POINTS} for the "
+                      f"low-angle plateau and two to bracket the drop), got {len(points)}")
+    plateau = sum(p[1] for p in points[:PLATEAU_POINTS]) / PLATEAU_POINTS
     half = 0.5 * plateau
-    if not plateau > 0.0:
-        return None, "eta at the smallest angles is not positive: nothing is trapped"
-    for (a_angle, a_eta), (b_angle, b_eta) in zip(points, points[1:]):
+    if not plateau >= MIN_PLATEAU_ETA:
+        return None, (f"eta at the smallest angles is {plateau:.3g}, below {MIN_PLATEAU_ETA}: "
+                      "their traps have not filled (are the runs long enough?)")
+    caution = ""
+    for angle, _, levelled_at, duration in points[:PLATEAU_POINTS]:
+        if math.isnan(duration):
+            continue
+        if math.isnan(levelled_at) or levelled_at > 0.5 * duration:
+            if math.isnan(levelled_at):
+                caution = (f"at {angle:g}, eta never reached 90% of its final level in the runs "
+                           f"({duration:g} s): the plateau, and theta_c with it, may be too "
+                           "low; run longer")
+            else:
+                caution = (f"at {angle:g}, eta was still rising in the second half of the runs "
+                           f"(it reached 90% of its final level at {levelled_at:.3g} s of "
+                           f"{duration:g} s): the plateau, and theta_c with it, may be too "
+                           "low; run longer")
+            break
+    for (a_angle, a_eta, _, _), (b_angle, b_eta, _, _) in zip(points, points[1:]):
         if a_eta >= half and b_eta < half:
             angle = a_angle + (a_eta - half) / (a_eta - b_eta) * (b_angle - a_angle)
             return {"angle": angle, "below": a_angle, "above": b_angle, "plateau": plateau,
-                    "half": half}, ""
+                    "half": half, "caution": caution}, ""
     return None, f"eta never falls below half its low-angle plateau ({half:.3g})"
 
 
@@ -224,13 +250,23 @@ class Sweep:
         etas = table.numbers(self.eta_column)
         others = list(zip(*(table.text(c) for c in self.other_columns))) or [()] * len(angles)
         status = table.text("status") if table.has("status") else ["complete"] * len(angles)
+        nans = [math.nan] * len(angles)
+        levelled = table.numbers("eta_time_to_90_s") if table.has("eta_time_to_90_s") else nans
+        durations = table.numbers("simulated_s") if table.has("simulated_s") else nans
         self.skipped = 0
         grouped = {}
-        for angle, eta, key, state in zip(angles, etas, others, status):
+        # key -> angle -> (latest time to 90%, NaN once a run never got there; shortest run)
+        self.levels = {}
+        for angle, eta, key, state, level, duration in zip(angles, etas, others, status,
+                                                           levelled, durations):
             if math.isnan(eta) or state != "complete":
                 self.skipped += 1
                 continue
             grouped.setdefault(key, {}).setdefault(angle, []).append(eta)
+            known = self.levels.setdefault(key, {}).get(angle, (0.0, math.inf))
+            latest = math.nan if math.isnan(level) or math.isnan(known[0]) \
+                else max(known[0], level)
+            self.levels[key][angle] = (latest, min(known[1], duration))
         if not grouped:
             raise PlotError(f"{table.path}: no complete point with a value of "
                             f"'{self.eta_column}'")
@@ -268,7 +304,12 @@ class Sweep:
 
     def critical_angles(self):
         """key -> (theta_c dict or None, reason)."""
-        return {key: critical_angle([(a, m) for a, m, _, _ in self.curves[key]])
+        def point(key, angle, mean):
+            latest, shortest = self.levels[key][angle]
+            if math.isnan(shortest) or math.isinf(shortest):
+                return (angle, mean)
+            return (angle, mean, latest, shortest)
+        return {key: critical_angle([point(key, a, m) for a, m, _, _ in self.curves[key]])
                 for key in self.keys()}
 
 
@@ -305,7 +346,7 @@ def plot_eta(plt, runs, out_dir, formats, written):
         table = Table(os.path.join(run_dir, "metrics.csv"))
         t = table.numbers("t")
         eta = table.numbers("eta", "eta(t)")
-        label = run_label(run_dir) if several else "all rods"
+        label = run_label(run_dir, runs) if several else "all rods"
         line_colour = colour(index) if several else "black"
         axes.plot(t, eta, color=line_colour, linewidth=1.2, label=label)
         if several:
@@ -339,7 +380,7 @@ def plot_population(plt, runs, out_dir, formats, written):
                             f"the columns are: {', '.join(table.header)}")
         for s, name in enumerate(species):
             line_colour = colour(index if several else s)
-            label = f"{run_label(run_dir)}: {name}" if several else name
+            label = f"{run_label(run_dir, runs)}: {name}" if several else name
             axes.plot(t, table.numbers(f"n_trap_{name}", "rods inside the trap"),
                       color=line_colour, linewidth=1.2, label=label)
             if table.has(f"n_stationary_trap_{name}"):
@@ -368,9 +409,9 @@ def plot_dtheta(plt, runs, out_dir, formats, written, tau):
         spans.add(round(span, 6))
         # Species in the order of their first rod, which is their index order in rods.csv.
         for s, name in enumerate(changes):
-            label = run_label(run_dir) if several else name
+            label = run_label(run_dir, runs) if several else name
             if several and len(changes) > 1:
-                label = f"{run_label(run_dir)}: {name}"
+                label = f"{run_label(run_dir, runs)}: {name}"
             lines.append((label, colour(index if several else s), changes[name]))
     largest = max((abs(v) for _, _, values in lines for v in values), default=0.0)
     half_width = next((r for r in DTHETA_RANGES if largest <= r), 180)
@@ -398,6 +439,8 @@ def plot_eta_theta(plt, sweep, out_dir, formats, written):
         label = sweep.label(key)
         if result:
             label += f": θc = {result['angle']:.1f}°"
+            if result["caution"]:
+                label += " (unreliable: η still rising, see theta_c.csv)"
             axes.axvline(result["angle"], color=line_colour, linestyle=":", linewidth=1.0)
         axes.errorbar([p[0] for p in curve], [p[1] for p in curve], yerr=[p[2] for p in curve],
                       color=line_colour, marker="o", markersize=4, linewidth=1.2, capsize=2,
@@ -452,8 +495,9 @@ def write_critical_angles(sweep, out_dir, written):
         writer.writerow(sweep.other_columns + ["theta_c", "below", "above", "plateau", "reason"])
         for key, (result, reason) in sweep.critical_angles().items():
             if result:
+                note = f"caution: {result['caution']}" if result["caution"] else ""
                 writer.writerow(list(key) + [f"{result[k]:.9g}" for k in
-                                             ("angle", "below", "above", "plateau")] + [""])
+                                             ("angle", "below", "above", "plateau")] + [note])
             else:
                 writer.writerow(list(key) + ["nan", "nan", "nan", "nan", reason])
     written.append(path)

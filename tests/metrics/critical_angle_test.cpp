@@ -1,6 +1,8 @@
 #include "metrics/critical_angle.hpp"
 
 #include <catch2/catch.hpp>
+#include <limits>
+#include <vector>
 
 using namespace rodsort::metrics;
 
@@ -29,13 +31,39 @@ TEST_CASE("theta_c takes the first drop, interpolated unevenly", "[metrics]") {
 }
 
 TEST_CASE("theta_c says why it cannot be found", "[metrics]") {
-  const CriticalAngle flat = critical_angle({{20, 0.8}, {60, 0.8}, {100, 0.7}});
+  const CriticalAngle flat =
+      critical_angle({{20, 0.8}, {60, 0.8}, {100, 0.7}, {120, 0.6}, {140, 0.5}});
   CHECK_FALSE(flat.found);
   CHECK_THAT(flat.reason, Catch::Contains("never falls below half"));
-  const CriticalAngle empty = critical_angle({{20, 0.0}, {60, 0.0}});
-  CHECK_FALSE(empty.found);
-  CHECK_THAT(empty.reason, Catch::Contains("not positive"));
   const CriticalAngle single = critical_angle({{20, 0.8}});
   CHECK_FALSE(single.found);
-  CHECK_THAT(single.reason, Catch::Contains("at least two"));
+  CHECK_THAT(single.reason, Catch::Contains("at least 5 angles"));
+}
+
+TEST_CASE("theta_c only where the data bear it", "[metrics]") {
+  // Two angles show a drop but no plateau: refused, not interpolated.
+  const CriticalAngle two = critical_angle({{100, 0.9}, {140, 0.0}});
+  CHECK_FALSE(two.found);
+  CHECK_THAT(two.reason, Catch::Contains("at least 5 angles (3 for the low-angle plateau"));
+  // Runs too short for the traps to fill: eta ~ 0.01 everywhere, with a "drop" in the noise.
+  const CriticalAngle unfilled =
+      critical_angle({{60, 0.012}, {80, 0.011}, {100, 0.010}, {120, 0.004}, {140, 0.001}});
+  CHECK_FALSE(unfilled.found);
+  CHECK_THAT(unfilled.reason, Catch::Contains("below 0.1"));
+  // Found, but eta at 80 degrees reached 90% of its level only at 120 s of 150: a caution.
+  std::vector<SweepPoint> rising = {
+      {60, 0.8, 20, 150}, {80, 0.7, 120, 150}, {100, 0.8, 30, 150}, {120, 0.1, 5, 150},
+      {140, 0.0, std::numeric_limits<double>::quiet_NaN(), 150}};
+  const CriticalAngle late = critical_angle(rising);
+  REQUIRE(late.found);
+  CHECK_THAT(late.caution, Catch::Contains("at 80, eta was still rising") &&
+                               Catch::Contains("at 120 s of 150 s"));
+  // Levelled in the first half everywhere on the plateau (140 degrees, never, is not on it).
+  rising[1].levelled_at = 40;
+  const CriticalAngle settled = critical_angle(rising);
+  REQUIRE(settled.found);
+  CHECK(settled.caution.empty());
+  // A plateau run that never reached 90% of its level is cautioned too.
+  rising[0].levelled_at = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THAT(critical_angle(rising).caution, Catch::Contains("at 60, eta never reached 90% of its final level in the runs (150 s)"));
 }

@@ -141,3 +141,34 @@ TEST_CASE("The plot script finds theta_c of a sweep as the metrics layer does", 
     CHECK(plateau == Approx(expected.plateau).epsilon(1e-6));
   }
 }
+
+TEST_CASE("The plot script cautions about theta_c as the metrics layer does", "[render][plot]") {
+  require_plot_python();
+  const TempDirectory sweep;
+  // At 80 degrees eta reached 90% of its level only at 120 s of a 150 s run.
+  const std::vector<double> angles = {60, 80, 100, 120, 140};
+  const std::vector<double> etas = {0.8, 0.7, 0.8, 0.1, 0.0};
+  const std::vector<double> levelled = {20, 120, 30, 5, 1};
+  std::ofstream csv(sweep / "sweep.csv");
+  csv << "point,trap.angle,seed,status,eta_mean,eta_time_to_90_s,simulated_s\n";
+  std::vector<metrics::SweepPoint> points;
+  for (std::size_t a = 0; a < angles.size(); ++a) {
+    csv << "p" << a << ',' << angles[a] << ",1,complete," << etas[a] << ',' << levelled[a]
+        << ",150\n";
+    points.push_back({angles[a], etas[a], levelled[a], 150});
+  }
+  csv.close();
+  const metrics::CriticalAngle expected = metrics::critical_angle(points);
+  REQUIRE(expected.found);
+  REQUIRE_FALSE(expected.caution.empty());
+
+  const render::ProgramOutput plotted =
+      render::run_plot_script({sweep.path().string(), "--what", "eta-theta"});
+  INFO(plotted.output);
+  REQUIRE(plotted.exit_status == 0);
+  std::ifstream theta_c(sweep / "plots" / "theta_c.csv");
+  std::string header, line;
+  std::getline(theta_c, header);
+  REQUIRE(std::getline(theta_c, line));
+  CHECK_THAT(line, Catch::Contains("caution: " + expected.caution));
+}
