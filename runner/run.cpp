@@ -183,7 +183,7 @@ class RunSession {
       const RunSummary summary = summarize_run(directory_);
       log("rodsort: trapping efficiency eta, mean over the last half: %.3g (spread %.2g); every "
           "frame in %s\n",
-          summary.eta_mean(), summary.eta_spread, (directory_ / kMetricsCsvFile).c_str());
+          summary.plateau_mean(), summary.eta_spread, (directory_ / kMetricsCsvFile).c_str());
     }
     return kExitOk;
   }

@@ -15,8 +15,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
 
-double RunSummary::eta_mean(const std::string& column) const {
-  for (const auto& [name, mean] : eta_means) {
+double RunSummary::plateau_mean(const std::string& column) const {
+  for (const auto& [name, mean] : plateau_means) {
     if (name == column) return mean;
   }
   return kNaN;
@@ -47,13 +47,15 @@ RunSummary summarize_run(const std::filesystem::path& run_directory) {
   const std::vector<double> times = table.numbers(*time_column);
   for (std::size_t column = 0; column < table.header.size(); ++column) {
     const std::string& name = table.header[column];
-    if (name.rfind("eta", 0) != 0) continue;
+    const bool averaged = name.rfind("eta", 0) == 0 || name.rfind("fraction_trap_", 0) == 0 ||
+                          name.rfind("purity_", 0) == 0 || name == "sorting_index";
+    if (!averaged) continue;
     if (table.rows.empty()) {
-      summary.eta_means.emplace_back(name, kNaN);
+      summary.plateau_means.emplace_back(name, kNaN);
       continue;
     }
     const metrics::PlateauStats stats = metrics::plateau_stats(times, table.numbers(column));
-    summary.eta_means.emplace_back(name, stats.mean);
+    summary.plateau_means.emplace_back(name, stats.mean);
     if (name == "eta") {
       summary.eta_spread = stats.spread;
       summary.eta_time_to_90 = stats.time_to_90;

@@ -1,7 +1,7 @@
 #pragma once
 // One line's worth of a run, for sweep.csv and `rodsort summarize`: how far it got, what it cost,
-// and its trapping efficiencies averaged over the plateau (the last half of the run, as the
-// metrics layer defines it).
+// and its trapping efficiencies and sorting measures averaged over the plateau (the last half of
+// the run, as the metrics layer defines it).
 
 #include <filesystem>
 #include <string>
@@ -17,14 +17,15 @@ struct RunSummary {
   double simulated_s = 0.0;        ///< [s]
   double wall_s = 0.0;             ///< [s]
   double cpu_per_simulated_s = 0.0;
-  /// Every eta column of metrics.csv (eta, eta_trap, eta_<species>, ...) with its mean over the
-  /// last half of the run; NaN without a trap or without rows.
-  std::vector<std::pair<std::string, double>> eta_means;
+  /// Every eta column of metrics.csv (eta, eta_trap, eta_<species>, ...) and every sorting
+  /// measure (fraction_trap_<species>, purity_<species>, sorting_index), in the file's order,
+  /// with its mean over the last half of the run; NaN without a trap or without rows.
+  std::vector<std::pair<std::string, double>> plateau_means;
   double eta_spread = 0.0;      ///< standard deviation of eta over the same samples
   double eta_time_to_90 = 0.0;  ///< [s] first time eta reaches 90% of its plateau; NaN if never
 
-  /// The mean of one eta column; NaN when absent.
-  double eta_mean(const std::string& column = "eta") const;
+  /// The plateau mean of one column; NaN when absent.
+  double plateau_mean(const std::string& column = "eta") const;
 };
 
 /// Reads run.json and metrics.csv of a run directory. A directory without them is "pending".

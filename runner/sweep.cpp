@@ -121,12 +121,12 @@ void write_sweep_csv(const std::filesystem::path& sweep_directory,
                      const std::vector<std::string>& keys, const std::vector<std::string>& points,
                      const std::vector<std::vector<std::string>>& values) {
   std::vector<RunSummary> summaries;
-  std::vector<std::string> eta_columns;
+  std::vector<std::string> mean_columns;
   for (const std::string& point : points) {
     summaries.push_back(summarize_run(sweep_directory / point));
-    for (const auto& [name, mean] : summaries.back().eta_means) {
-      if (std::find(eta_columns.begin(), eta_columns.end(), name) == eta_columns.end()) {
-        eta_columns.push_back(name);
+    for (const auto& [name, mean] : summaries.back().plateau_means) {
+      if (std::find(mean_columns.begin(), mean_columns.end(), name) == mean_columns.end()) {
+        mean_columns.push_back(name);
       }
     }
   }
@@ -134,7 +134,7 @@ void write_sweep_csv(const std::filesystem::path& sweep_directory,
   table.header.push_back(kSweepPointColumn);
   table.header.insert(table.header.end(), keys.begin(), keys.end());
   table.header.push_back(kSweepStatusColumn);
-  for (const std::string& column : eta_columns) {
+  for (const std::string& column : mean_columns) {
     table.header.push_back(column + "_mean");
     if (column == "eta") {
       table.header.push_back("eta_spread");
@@ -149,8 +149,8 @@ void write_sweep_csv(const std::filesystem::path& sweep_directory,
     std::vector<std::string> row = {points[p]};
     row.insert(row.end(), values[p].begin(), values[p].end());
     row.push_back(summary.status);
-    for (const std::string& column : eta_columns) {
-      row.push_back(number_text(summary.eta_mean(column)));
+    for (const std::string& column : mean_columns) {
+      row.push_back(number_text(summary.plateau_mean(column)));
       if (column == "eta") {
         row.push_back(number_text(summary.eta_spread));
         row.push_back(number_text(summary.eta_time_to_90));
@@ -272,7 +272,7 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
         char text[128];
         std::snprintf(text, sizeof text, " in %s, %.3g CPU-s per sim-s, eta = %.3g",
                       format_duration(summary.wall_s).c_str(), summary.cpu_per_simulated_s,
-                      summary.eta_mean());
+                      summary.plateau_mean());
         line += text;
       }
       write_sweep_csv(directory, sweep.keys, names, values);

@@ -53,6 +53,23 @@ TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][
     CHECK(std::filesystem::exists(sweep / "scenarios" / (row[0] + ".yaml")));
     CHECK(table.numbers(*table.column("eta_mean"))[0] >= 0.0);
   }
+  // The sorting measures are averaged over the last half of each run, like eta.
+  REQUIRE(table.column("purity_A_mean"));
+  const std::size_t fraction_column = *table.column("fraction_trap_A_mean");
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const CsvTable metrics = read_csv(sweep / table.rows[r][0] / kMetricsCsvFile);
+    const std::vector<double> t = metrics.numbers(*metrics.column("t"));
+    const std::vector<double> fraction = metrics.numbers(*metrics.column("fraction_trap_A"));
+    double sum = 0.0;
+    int samples = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (t[i] < 0.5 * (t.front() + t.back())) continue;
+      sum += fraction[i];
+      ++samples;
+    }
+    REQUIRE(samples > 0);
+    CHECK(table.numbers(fraction_column)[r] == Approx(sum / samples));
+  }
   CHECK(table.rows[0][1] == "40");
   CHECK(table.rows[1][1] == "60");
   CHECK_THAT(read_file(sweep / table.rows[0][0] / kResolvedScenarioFile),
