@@ -4,7 +4,7 @@
 `rodsort plot` runs this script; it can also be run by hand:
 
     rodsort_plot.py RUN_DIR [RUN_DIR ...]  [--what eta,population,dtheta] [-o DIR]
-    rodsort_plot.py SWEEP_DIR              [--what eta-theta,thetac-eps]   [-o DIR]
+    rodsort_plot.py SWEEP_DIR              [--what eta-theta,thetac-eps,measures] [-o DIR]
     rodsort_plot.py STUDY_DIR [STUDY_DIR ...] [--what axial-velocity,msd]  [-o DIR]
 
 From a run directory (metrics.csv, rods.csv):
@@ -15,6 +15,9 @@ From a run directory (metrics.csv, rods.csv):
 From a sweep directory (sweep.csv):
   eta-theta   time-averaged eta against the trap angle, one line per noise level, theta_c marked
   thetac-eps  theta_c against the collision-kick noise eps
+  measures    eta, eta in the trap and, for mixtures, the sorting index and the first species'
+              purity against the first swept key other than the seed (a sweep over noise or
+              composition; seeds averaged, standard errors as bars)
 From a single-particle study directory (`rodsort single -o`: summary.csv, lags.csv):
   axial-velocity  P(V_x), the axial velocity over the window, with the experiments' range of v0
   msd             mean squared displacement and heading correlation against the lag
@@ -33,7 +36,7 @@ import os
 import sys
 
 RUN_KINDS = ("eta", "population", "dtheta")
-SWEEP_KINDS = ("eta-theta", "thetac-eps")
+SWEEP_KINDS = ("eta-theta", "thetac-eps", "measures")
 STUDY_KINDS = ("axial-velocity", "msd")
 
 # The Okabe-Ito palette in render/palette.cpp's order.
@@ -486,6 +489,62 @@ def plot_thetac_eps(plt, sweep, out_dir, formats, written):
     save(plt, figure, out_dir, "thetac-eps", formats, written)
 
 
+def plot_measures(plt, sweep_dir, out_dir, formats, written):
+    """The plateau means of sweep.csv against the first swept key (other than the seed) whose
+    values are numbers; one set of lines per combination of the other swept keys."""
+    table = Table(os.path.join(sweep_dir, "sweep.csv"))
+    if not (table.has("point") and table.has("status")):
+        raise PlotError(f"{table.path}: no point and status columns; is it rodsort's sweep.csv?")
+    swept = table.header[table.header.index("point") + 1:table.header.index("status")]
+    keys = [c for c in swept if c != "seed"]
+    numeric = [c for c in keys if all(is_number(v) for v in table.text(c))]
+    if not numeric:
+        raise PlotError(f"{table.path}: no swept key with numeric values to plot against "
+                        f"(swept: {', '.join(swept)})")
+    x_column = numeric[0]
+    others = [c for c in keys if c != x_column]
+    purities = [c for c in table.header if c.startswith("purity_") and c.endswith("_mean")]
+    measures = [c for c in ("eta_mean", "eta_trap_mean", "sorting_index_mean") if table.has(c)]
+    if len(purities) > 1:
+        measures += purities[:1]
+    names = {"eta_mean": "η", "eta_trap_mean": "η in the trap",
+             "sorting_index_mean": "sorting index S"}
+    status = table.text("status")
+    x_values = table.numbers(x_column)
+    groups = list(zip(*(table.text(c) for c in others))) or [()] * len(x_values)
+    figure, axes = new_figure(plt)
+    line = 0
+    for group in sorted(set(groups)):
+        for measure in measures:
+            values = table.numbers(measure)
+            by_x = {}
+            for x, value, key, state in zip(x_values, values, groups, status):
+                if key == group and state == "complete" and not math.isnan(value):
+                    by_x.setdefault(x, []).append(value)
+            if not by_x:
+                continue
+            xs = sorted(by_x)
+            means = [sum(by_x[x]) / len(by_x[x]) for x in xs]
+            errors = []
+            for x, mean in zip(xs, means):
+                v = by_x[x]
+                errors.append(math.sqrt(sum((a - mean) ** 2 for a in v) / (len(v) - 1) / len(v))
+                              if len(v) > 1 else 0.0)
+            label = names.get(measure, measure[:-len("_mean")].replace("purity_", "purity of "))
+            if group:
+                label += " (" + ", ".join(f"{c} = {v}" for c, v in zip(others, group)) + ")"
+            axes.errorbar(xs, means, yerr=errors, color=colour(line), marker="o", markersize=4,
+                          linewidth=1.2, capsize=2, label=label)
+            line += 1
+    if line == 0:
+        raise PlotError(f"{table.path}: no complete point to plot")
+    axes.set_xlabel(x_column)
+    axes.set_ylabel("mean over the last half of each run")
+    axes.axhline(0.0, color="0.6", linewidth=0.8)
+    axes.legend(frameon=False, fontsize="small")
+    save(plt, figure, out_dir, "measures", formats, written)
+
+
 def write_critical_angles(sweep, out_dir, written):
     """theta_c.csv: one row per curve, its swept values, then theta_c and the bracketing angles
     [degrees], the plateau eta, and why theta_c was not found when it was not."""
@@ -622,14 +681,28 @@ def main(argv):
 
     written = []
     if sweep_mode:
-        sweep = Sweep(paths[0])
-        if sweep.skipped:
-            print(f"note: {sweep.skipped} point(s) of {sweep.table.path} not complete or without "
-                  "eta were left out", file=sys.stderr)
-        write_critical_angles(sweep, out_dir, written)
+        over_angle = swept_column(Table(os.path.join(paths[0], "sweep.csv")), "trap.angle")
+        sweep = None
+        if over_angle and any(kind != "measures" for kind in kinds):
+            sweep = Sweep(paths[0])
+            if sweep.skipped:
+                print(f"note: {sweep.skipped} point(s) of {sweep.table.path} not complete or "
+                      "without eta were left out", file=sys.stderr)
+            write_critical_angles(sweep, out_dir, written)
         for kind in kinds:
             try:
-                if kind == "eta-theta":
+                if kind == "measures":
+                    # Beside eta-theta, a sweep over the angle alone needs no second figure.
+                    if over_angle and not explicit:
+                        continue
+                    plot_measures(plt, paths[0], out_dir, formats, written)
+                elif sweep is None:
+                    if not explicit:
+                        continue
+                    raise PlotError(f"{os.path.join(paths[0], 'sweep.csv')}: the sweep is not "
+                                    "over trap.angle; `--what measures` plots it against its "
+                                    "swept key")
+                elif kind == "eta-theta":
                     plot_eta_theta(plt, sweep, out_dir, formats, written)
                 else:
                     plot_thetac_eps(plt, sweep, out_dir, formats, written)

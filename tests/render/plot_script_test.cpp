@@ -172,3 +172,25 @@ TEST_CASE("The plot script cautions about theta_c as the metrics layer does", "[
   REQUIRE(std::getline(theta_c, line));
   CHECK_THAT(line, Catch::Contains("caution: " + expected.caution));
 }
+
+TEST_CASE("The plot script draws a sweep over noise against its swept key", "[render][plot]") {
+  require_plot_python();
+  const TempDirectory sweep;
+  std::ofstream csv(sweep / "sweep.csv");
+  csv << "point,species[1].noise.white_Dr,seed,status,eta_mean,eta_trap_mean,purity_A_mean,"
+         "purity_RnT_mean,sorting_index_mean\n";
+  csv << "p1,0,1,complete,0.8,0.7,0.5,0.5,0.1\np2,0,2,complete,0.82,0.72,0.52,0.48,0.12\n";
+  csv << "p3,0.5,1,complete,0.7,0.6,0.6,0.4,0.3\np4,2,1,complete,0.6,0.5,0.8,0.2,0.6\n";
+  csv.close();
+  // By default: the measures, and no complaint that the sweep is not over the angle.
+  const render::ProgramOutput plotted = render::run_plot_script({sweep.path().string()});
+  INFO(plotted.output);
+  REQUIRE(plotted.exit_status == 0);
+  CHECK_THAT(plotted.output, !Catch::Contains("not over trap.angle"));
+  check_png(sweep / "plots" / "measures.png");
+  // Asked for eta-theta, it says why not and what to ask for instead.
+  const render::ProgramOutput refused =
+      render::run_plot_script({sweep.path().string(), "--what", "eta-theta"});
+  CHECK(refused.exit_status != 0);
+  CHECK_THAT(refused.output, Catch::Contains("`--what measures` plots it against its swept key"));
+}
