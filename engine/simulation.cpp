@@ -203,11 +203,8 @@ struct Simulation::Impl {
     return body;
   }
 
+  /// `state` has been checked (check_state) or built from the model.
   void build_world(const State& state) {
-    if (state.rods.size() != model.rods.size()) {
-      throw std::invalid_argument("state has " + std::to_string(state.rods.size()) +
-                                  " rods, the model " + std::to_string(model.rods.size()));
-    }
     configuration = std::make_unique<btDefaultCollisionConfiguration>(
         RodCollisionDispatch::configuration_info());
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
@@ -499,6 +496,7 @@ Frame Simulation::frame() const {
 State Simulation::state() const { return impl_->current_state(); }
 
 void Simulation::restore(const State& state) {
+  check_state(state, impl_->model.rods.size());  // before the world is torn down
   impl_->destroy_world();
   impl_->build_world(state);
 }

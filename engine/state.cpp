@@ -1,5 +1,7 @@
 #include "engine/state.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <istream>
 #include <ostream>
@@ -79,6 +81,38 @@ std::uint64_t hash_state(const State& state) {
   std::ostringstream bytes;
   write_state(bytes, state);
   return fingerprint(bytes.str());
+}
+
+void check_state(const State& state, std::size_t rod_count) {
+  if (state.rods.size() != rod_count) {
+    throw std::invalid_argument("the state has " + std::to_string(state.rods.size()) +
+                                " rods, the model " + std::to_string(rod_count));
+  }
+  if (!std::isfinite(state.time) || state.time < 0.0 || state.step < 0) {
+    throw std::invalid_argument("the state's time (" + std::to_string(state.time) + " s) or step (" +
+                                std::to_string(state.step) + ") is negative or not finite");
+  }
+  const auto all_finite = [](const auto& values) {
+    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+  };
+  for (std::size_t i = 0; i < state.rods.size(); ++i) {
+    const RodState& rod = state.rods[i];
+    const std::string which = "rod " + std::to_string(i) + " of the state";
+    if (!all_finite(rod.position)) throw std::invalid_argument(which + ": position not finite");
+    if (!all_finite(rod.velocity) || !all_finite(rod.angular_velocity)) {
+      throw std::invalid_argument(which + ": velocity not finite");
+    }
+    // Rows of a rotation matrix are orthonormal: R R^T = I, to rounding.
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        double dot = 0.0;
+        for (int k = 0; k < 3; ++k) dot += rod.basis[3 * a + k] * rod.basis[3 * b + k];
+        if (!(std::abs(dot - (a == b ? 1.0 : 0.0)) < 1e-9)) {
+          throw std::invalid_argument(which + ": its frame (basis) is not a rotation");
+        }
+      }
+    }
+  }
 }
 
 }  // namespace rodsort::engine

@@ -32,4 +32,9 @@ State read_state(std::istream& in);
 /// A hash of every bit of the state, for determinism tests.
 std::uint64_t hash_state(const State& state);
 
+/// Throws std::invalid_argument, naming the rod and the quantity, unless `state` holds
+/// `rod_count` rods with finite positions and velocities and orthonormal frames, at a finite,
+/// non-negative time and step. Simulation::restore calls it before it tears anything down.
+void check_state(const State& state, std::size_t rod_count);
+
 }  // namespace rodsort::engine

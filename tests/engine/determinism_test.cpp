@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <limits>
 #include <sstream>
 
 #include "engine/simulation.hpp"
@@ -70,4 +71,26 @@ TEST_CASE("restoring a state rebuilds the same world", "[state]") {
   b.advance(800);
   CHECK(hash_state(a.state()) == hash_state(b.state()));
   CHECK(b.time() == Approx(0.15).epsilon(1e-12));
+}
+
+TEST_CASE("a state that cannot be restored is refused before the world is touched", "[state]") {
+  Simulation sim(small_model());
+  sim.advance(200);
+  const State good = sim.state();
+  State fewer = good;
+  fewer.rods.pop_back();
+  CHECK_THROWS_WITH(sim.restore(fewer), Catch::Contains("the state has") &&
+                                            Catch::Contains("rods, the model"));
+  State not_finite = good;
+  not_finite.rods[3].position[1] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(sim.restore(not_finite), Catch::Contains("rod 3 of the state: position"));
+  State sheared = good;
+  sheared.rods[2].basis[1] += 0.01;
+  CHECK_THROWS_WITH(sim.restore(sheared), Catch::Contains("rod 2 of the state: its frame"));
+  // The simulation is as it was: it steps on exactly like an untouched copy.
+  Simulation twin(small_model());
+  twin.advance(200);
+  sim.advance(300);
+  twin.advance(300);
+  CHECK(hash_state(sim.state()) == hash_state(twin.state()));
 }
