@@ -20,6 +20,7 @@
 #include "runner/atomic_file.hpp"
 #include "runner/checkpoint.hpp"
 #include "runner/clocks.hpp"
+#include "runner/cost_estimate.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/interrupt.hpp"
 #include "runner/lammps_dump.hpp"
@@ -63,8 +64,9 @@ class RunSession {
     metrics_->append(observer_.csv_header() + "\n");
     started_at_ = utc_now_iso8601();
     begin_session(false);
-    log("rodsort: running %s (%zu rods, %g s simulated) into %s\n", plan_.name.c_str(),
-        plan_.model.rods.size(), plan_.duration_s, directory_.c_str());
+    log("rodsort: running %s (%zu rods, %g s simulated) into %s; %s (docs/performance.md)\n",
+        plan_.name.c_str(), plan_.model.rods.size(), plan_.duration_s, directory_.c_str(),
+        describe_cost(estimate_cost(plan_.model, plan_.schedule.total_steps)).c_str());
     handle_events(0);
     write_checkpoint_now();
     return loop();

@@ -10,6 +10,7 @@
 #include "runner/atomic_file.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
+#include "runner/cost_estimate.hpp"
 #include "runner/file_kind.hpp"
 #include "runner/interrupt.hpp"
 #include "runner/json_text.hpp"
@@ -36,6 +37,8 @@ struct PointPlan {
   std::vector<std::string> values;  ///< of the swept keys, as written
   std::string resolved_yaml;
   PointAction action = PointAction::kStart;
+  std::size_t rods = 0;
+  CostEstimate cost{};  ///< of the whole run
 };
 
 /// A number for sweep.csv: shortest exact text, "nan" when undefined.
@@ -105,8 +108,22 @@ void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& poi
       << ", over";
   for (const std::string& key : sweep.keys) out << ' ' << key;
   out << '\n';
+  CostEstimate total{0.0, 0.0};
   for (const PointPlan& point : points) {
-    out << "  " << point.name << ": " << describe_action(point.action) << '\n';
+    out << "  " << point.name << ": " << describe_action(point.action);
+    if (point.action != PointAction::kSkip) {
+      out << " (" << point.rods << " rods, " << describe_cost(point.cost) << ')';
+      total.low_cpu_s += point.cost.low_cpu_s;
+      total.high_cpu_s += point.cost.high_cpu_s;
+    }
+    out << '\n';
+  }
+  if (total.high_cpu_s > 0.0) {
+    out << "to run: " << describe_cost(total)
+        << " in all, from rods spread out to a filled trap (docs/performance.md); resumed "
+           "points cost less\n";
+  } else {
+    out << "nothing to run\n";
   }
 }
 
@@ -193,6 +210,8 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     for (const scenarios::Override& value : point.overrides)
       plan.values.push_back(value.value_text());
     plan.resolved_yaml = scenarios::resolved_yaml(*scenario.scenario);
+    plan.rods = scenario.scenario->model.rods.size();
+    plan.cost = estimate_cost(scenario.scenario->model, scenario.scenario->run.steps);
     std::string conflict;
     plan.action = decide(directory / point.name, plan.resolved_yaml, request.force, conflict);
     if (!conflict.empty()) conflicts.push_back(conflict);

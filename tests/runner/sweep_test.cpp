@@ -6,6 +6,7 @@
 
 #include "rodsort_program.hpp"
 #include "runner/atomic_file.hpp"
+#include "runner/cost_estimate.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
@@ -124,6 +125,25 @@ TEST_CASE("a dry run lists the points and writes nothing", "[runner][sweep]") {
   CHECK_THAT(out.str(), Catch::Contains("angle-40: to run"));
   CHECK_THAT(out.str(), Catch::Contains("angle-60: to run"));
   CHECK_FALSE(std::filesystem::exists(directory / "sweep"));
+  // Each point's rods and cost, from the measured cost per rod and step: tiny.yaml is 4 rods for
+  // 3500 steps, 4 x 3500 x (0.63 to 1.36) us = 0.0088 to 0.019 CPU-s.
+  CHECK_THAT(out.str(), Catch::Contains("angle-40: to run (4 rods, about 0.0088-0.019 CPU-s)"));
+  CHECK_THAT(out.str(), Catch::Contains("to run: about 0.018-0.038 CPU-s in all"));
+}
+
+TEST_CASE("a cost estimate scales with rods and steps, and rough plates cost more",
+          "[runner][sweep]") {
+  rodsort::engine::Model model;
+  model.rods.resize(100);
+  const CostEstimate flat = estimate_cost(model, 10000);
+  CHECK(flat.low_cpu_s == Approx(100 * 10000 * kRodStepCostDispersed));
+  CHECK(flat.high_cpu_s == Approx(100 * 10000 * kRodStepCostFilled));
+  model.roughness.base_slope = 0.05;
+  const CostEstimate rough = estimate_cost(model, 10000);
+  // The roughness study's A at slope 0.05: 0.054 CPU-s per rod-second, 5.4 us per rod-step.
+  CHECK(rough.low_cpu_s / (100 * 10000) == Approx(5.6e-6).epsilon(0.1));
+  CHECK(describe_cost({90.0, 200.0}) == "about 1.5-3.3 CPU-min");
+  CHECK(describe_cost({3.0 * 3600, 8.0 * 3600}) == "about 3-8 CPU-h");
 }
 
 TEST_CASE("summarize refuses a directory that is not a sweep", "[runner][sweep]") {
