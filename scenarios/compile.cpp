@@ -368,7 +368,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
 
   const Counts counts = count_rods(spec, shapes, scenario.trap_area, diagnostics);
   if (counts.ok) {
-    int total = 0;
+    std::int64_t total = 0;  // up to 64 species of up to 1e6 rods each
     for (const int count : counts.per_species) total += count;
     if (total == 0) {
       diagnostics.error(spec.species_where, "species", "the scenario has no rods");

@@ -83,6 +83,14 @@ void check_species(const std::vector<SpeciesSpec>& species, const SourceLocation
     diagnostics.error(where, "species", "needs at least one species");
     return;
   }
+  // Each species is a colour, columns of metrics.csv and a line of every plot.
+  constexpr std::size_t kMaxSpecies = 64;
+  if (species.size() > kMaxSpecies) {
+    diagnostics.error(where, "species",
+                      "expected at most " + std::to_string(kMaxSpecies) + " species, got " +
+                          std::to_string(species.size()));
+    return;
+  }
   for (std::size_t i = 0; i < species.size(); ++i) {
     for (std::size_t j = 0; j < i; ++j) {
       if (species[i].name.value == species[j].name.value) {

@@ -270,6 +270,13 @@ Sourced<std::vector<double>> SectionReader::real_list(std::string_view key) {
     diagnostics_.error(node.where, out.path, "expected a list of numbers, got " + node.describe());
     return out;
   }
+  constexpr std::size_t kMaxListLength = 1000;  // snapshot times: each is a file of the world
+  if (node.items.size() > kMaxListLength) {
+    diagnostics_.error(node.where, out.path,
+                       "expected at most " + std::to_string(kMaxListLength) + " values, got " +
+                           std::to_string(node.items.size()));
+    return out;
+  }
   for (const SourceNode& item : node.items) {
     const auto value = to_real(item, found.row, out.path, true);
     if (value) out.value.push_back(*value);
@@ -286,6 +293,13 @@ std::optional<Sourced<std::vector<std::array<double, 2>>>> SectionReader::sphere
   const std::string expected = "expected a list of spheres [axial position, radius] in mm";
   if (!node.is_sequence() || node.items.empty()) {
     diagnostics_.error(node.where, out.path, expected + ", got " + node.describe());
+    return out;
+  }
+  constexpr std::size_t kMaxSpheres = 200;  // as taper.spheres
+  if (node.items.size() > kMaxSpheres) {
+    diagnostics_.error(node.where, out.path,
+                       "expected at most " + std::to_string(kMaxSpheres) + " spheres, got " +
+                           std::to_string(node.items.size()));
     return out;
   }
   for (std::size_t i = 0; i < node.items.size(); ++i) {
