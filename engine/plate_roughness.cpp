@@ -47,8 +47,9 @@ PlateRoughness::PlateRoughness(double slope, double wavelength, double box_x, do
     modes_.push_back(mode);
   }
   if (static_cast<int>(modes_.size()) < kModes) {
-    throw std::invalid_argument("the periodic cell is too small for a rough plate of this "
-                                "wavelength: fewer than 64 distinct wave vectors fit");
+    throw std::invalid_argument(
+        "the periodic cell is too small for a rough plate of this "
+        "wavelength: fewer than 64 distinct wave vectors fit");
   }
   // <|grad h|^2> = sum_j a^2 k_j^2 / 2 = slope^2.
   amplitude_ = slope / std::sqrt(sum_k2 / 2.0);

@@ -9,8 +9,8 @@ namespace rodsort::engine {
 
 /// Roughness of the plates' surfaces; a slope of 0 is a flat plate (the paper's model).
 struct Roughness {
-  double base_slope = 0.0;  ///< RMS slope of the base's surface [rad]
-  double lid_slope = 0.0;   ///< RMS slope of the lid's surface [rad]
+  double base_slope = 0.0;   ///< RMS slope of the base's surface [rad]
+  double lid_slope = 0.0;    ///< RMS slope of the lid's surface [rad]
   double wavelength = 0.25;  ///< mean wavelength of the height field [mm]
 };
 

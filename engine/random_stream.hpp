@@ -13,7 +13,12 @@
 
 namespace rodsort::engine {
 
-enum class StreamPurpose : std::uint64_t { kCollisionKick = 1, kWhiteNoise = 2, kPlacement = 3, kRoughness = 4 };
+enum class StreamPurpose : std::uint64_t {
+  kCollisionKick = 1,
+  kWhiteNoise = 2,
+  kPlacement = 3,
+  kRoughness = 4
+};
 
 class RandomStream {
  public:

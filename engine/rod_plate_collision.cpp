@@ -136,8 +136,7 @@ void RodPlateCollision::process_rough(const PlateRoughness& roughness, bool base
     const btVector3 center = origin + axis * geometry.axial[i];
     const PlateRoughness::Surface local = roughness.at(center.x(), center.y());
     // Normal on the plate toward the rod: the surface's upward normal, turned down for the lid.
-    const btVector3 normal =
-        btVector3(-local.slope_x, -local.slope_y, 1.0).normalized() * side;
+    const btVector3 normal = btVector3(-local.slope_x, -local.slope_y, 1.0).normalized() * side;
     const btVector3 on_surface(center.x(), center.y(), surface + local.height);
     const double depth = normal.dot(center - on_surface) - geometry.radius[i];
     return Contact{normal, center - normal * (geometry.radius[i] + depth), depth};

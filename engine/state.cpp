@@ -89,8 +89,9 @@ void check_state(const State& state, std::size_t rod_count) {
                                 " rods, the model " + std::to_string(rod_count));
   }
   if (!std::isfinite(state.time) || state.time < 0.0 || state.step < 0) {
-    throw std::invalid_argument("the state's time (" + std::to_string(state.time) + " s) or step (" +
-                                std::to_string(state.step) + ") is negative or not finite");
+    throw std::invalid_argument("the state's time (" + std::to_string(state.time) +
+                                " s) or step (" + std::to_string(state.step) +
+                                ") is negative or not finite");
   }
   const auto all_finite = [](const auto& values) {
     return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });

@@ -2,9 +2,9 @@
 
 #include <charconv>
 #include <cstdio>
-#include <string_view>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "engine/fingerprint.hpp"
 #include "runner/atomic_file.hpp"
@@ -79,13 +79,15 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   try {
     std::string bytes = read_file(path);
     if (bytes.rfind(kOldMagic, 0) == 0) {
-      throw std::runtime_error("written by an older rodsort (format 1, without a checksum); "
-                               "resume it with that version, or start the run again");
+      throw std::runtime_error(
+          "written by an older rodsort (format 1, without a checksum); "
+          "resume it with that version, or start the run again");
     }
     if (bytes.rfind(kMagic, 0) != 0) throw std::runtime_error("not a checkpoint");
     const std::size_t body = bytes.size() >= kChecksumLine ? bytes.size() - kChecksumLine : 0;
     const std::string_view trailer = std::string_view(bytes).substr(body);
-    if (trailer.size() != kChecksumLine || trailer.substr(0, kChecksumPrefix.size()) != kChecksumPrefix) {
+    if (trailer.size() != kChecksumLine ||
+        trailer.substr(0, kChecksumPrefix.size()) != kChecksumPrefix) {
       throw std::runtime_error("cut short: its closing checksum line is missing");
     }
     const std::string recorded(trailer.substr(kChecksumPrefix.size(), 16));

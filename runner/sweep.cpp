@@ -8,9 +8,9 @@
 #include <thread>
 
 #include "runner/atomic_file.hpp"
+#include "runner/cost_estimate.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
-#include "runner/cost_estimate.hpp"
 #include "runner/file_kind.hpp"
 #include "runner/interrupt.hpp"
 #include "runner/json_text.hpp"

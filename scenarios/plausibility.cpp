@@ -26,7 +26,8 @@ std::string mm(double value) { return format_real(value) + " mm"; }
 /// Three significant digits: the bounds are estimates, and 17 digits would pretend otherwise.
 std::string rounded(double value) {
   if (value == 0.0 || !std::isfinite(value)) return format_real(value);
-  // Dividing by an exact power of ten keeps the shortest form short (0.123, not 0.12300000000000001).
+  // Dividing by an exact power of ten keeps the shortest form short (0.123, not
+  // 0.12300000000000001).
   const double exponent = std::floor(std::log10(std::abs(value))) - 2.0;
   const double power = std::pow(10.0, std::abs(exponent));
   return format_real(exponent < 0.0 ? std::round(value * power) / power
@@ -53,12 +54,13 @@ void check_step_travel(const ScenarioSpec& spec, const engine::Model& model,
   if (!drive_resolved) {
     const bool by_amplitude = spec.amplitude.has_value();
     const Sourced<double>& source = by_amplitude ? *spec.amplitude : *spec.gamma;
-    diagnostics.error(
-        source.where, source.path,
-        "got " + format_real(source.value) + ": the plates move up to " + rounded_mm(plate_speed * dt) + " in one step (A 2 pi f dt, " +
-            "A = " + rounded_mm(model.drive.amplitude) + "), more than half the thinnest " +
-            "sphere's radius (" + mm(allowed) + "): contacts with the plates would be missed; " +
-            "lower " + (by_amplitude ? "the amplitude" : "gamma") + " or run.dt");
+    diagnostics.error(source.where, source.path,
+                      "got " + format_real(source.value) + ": the plates move up to " +
+                          rounded_mm(plate_speed * dt) + " in one step (A 2 pi f dt, " +
+                          "A = " + rounded_mm(model.drive.amplitude) +
+                          "), more than half the thinnest " + "sphere's radius (" + mm(allowed) +
+                          "): contacts with the plates would be missed; " + "lower " +
+                          (by_amplitude ? "the amplitude" : "gamma") + " or run.dt");
   }
 
   for (std::size_t i = 0; i < model.species.size(); ++i) {
@@ -83,14 +85,14 @@ void check_step_travel(const ScenarioSpec& spec, const engine::Model& model,
     // White noise turns a rod by sqrt(2 D_r dt) per step (one standard deviation).
     const double turn = std::sqrt(2.0 * species.noise.white_Dr * dt);
     if (turn * arm > own_allowed) {
-      diagnostics.error(source.white_Dr.where, source.white_Dr.path,
-                        "got " + format_real(species.noise.white_Dr) + " rad^2/s, which turns " +
-                            "a rod by " + rounded(turn) + " rad per step (sqrt(2 D_r dt)), " +
-                            "its tips by " + rounded_mm(turn * arm) + ", more than half its " +
-                            "thinnest sphere's radius (" + mm(own_allowed) + "); expected " +
-                            "white_Dr <= " +
-                            rounded(own_allowed * own_allowed / (2.0 * arm * arm * dt)) +
-                            " rad^2/s at this run.dt, or a smaller run.dt");
+      diagnostics.error(
+          source.white_Dr.where, source.white_Dr.path,
+          "got " + format_real(species.noise.white_Dr) + " rad^2/s, which turns " + "a rod by " +
+              rounded(turn) + " rad per step (sqrt(2 D_r dt)), " + "its tips by " +
+              rounded_mm(turn * arm) + ", more than half its " + "thinnest sphere's radius (" +
+              mm(own_allowed) + "); expected " +
+              "white_Dr <= " + rounded(own_allowed * own_allowed / (2.0 * arm * arm * dt)) +
+              " rad^2/s at this run.dt, or a smaller run.dt");
     }
   }
 }

@@ -25,9 +25,9 @@ SourceLocation location_of(const YAML::Mark& mark, const std::string& source,
 // A scenario is a few hundred nodes and a few kilobytes; these bounds are a thousand times that,
 // and they keep a hostile file (an alias that refers to itself, aliases nested ten deep that
 // expand to billions of nodes, a file that never ends) from exhausting the stack or the memory.
-constexpr std::size_t kMaxNodes = 200'000;              ///< after aliases are expanded
-constexpr std::size_t kMaxExpandedText = 16'000'000;    ///< scalar bytes after expansion
-constexpr std::size_t kMaxDepth = 64;                   ///< nested maps and sequences
+constexpr std::size_t kMaxNodes = 200'000;            ///< after aliases are expanded
+constexpr std::size_t kMaxExpandedText = 16'000'000;  ///< scalar bytes after expansion
+constexpr std::size_t kMaxDepth = 64;                 ///< nested maps and sequences
 constexpr std::uintmax_t kMaxFileBytes = 16'000'000;
 
 /// Turns yaml-cpp's node graph into a SourceNode tree, refusing what a scenario never needs and
@@ -205,9 +205,8 @@ class DocumentStarts final : public YAML::EventHandler {
 bool has_document_marker(std::string_view text) {
   for (std::size_t line = 0; line < text.size();) {
     const std::string_view rest = text.substr(line);
-    if (rest.rfind("---", 0) == 0 &&
-        (rest.size() == 3 || rest[3] == ' ' || rest[3] == '\n' || rest[3] == '\r' ||
-         rest[3] == '\t')) {
+    if (rest.rfind("---", 0) == 0 && (rest.size() == 3 || rest[3] == ' ' || rest[3] == '\n' ||
+                                      rest[3] == '\r' || rest[3] == '\t')) {
       return true;
     }
     const std::size_t newline = text.find('\n', line);
@@ -304,8 +303,9 @@ std::optional<SourceNode> parse_yaml(std::string_view text, const std::string& s
     const YAML::Mark& second = document_starts[1];
     // A second document begins with a `---` line; without one, yaml-cpp has found a "document"
     // in text it could not read.
-    const bool marked = second.pos > document_starts[0].pos &&
-                        has_document_marker(text.substr(0, static_cast<std::size_t>(second.pos) + 3));
+    const bool marked =
+        second.pos > document_starts[0].pos &&
+        has_document_marker(text.substr(0, static_cast<std::size_t>(second.pos) + 3));
     if (!marked) {
       diagnostics.error(location_of(second, source, {source, 0, 0}), "",
                         "YAML syntax error: the text cannot be read as YAML from here");

@@ -79,8 +79,8 @@ TEST_CASE("a state that cannot be restored is refused before the world is touche
   const State good = sim.state();
   State fewer = good;
   fewer.rods.pop_back();
-  CHECK_THROWS_WITH(sim.restore(fewer), Catch::Contains("the state has") &&
-                                            Catch::Contains("rods, the model"));
+  CHECK_THROWS_WITH(sim.restore(fewer),
+                    Catch::Contains("the state has") && Catch::Contains("rods, the model"));
   State not_finite = good;
   not_finite.rods[3].position[1] = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_WITH(sim.restore(not_finite), Catch::Contains("rod 3 of the state: position"));

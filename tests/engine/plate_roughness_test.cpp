@@ -1,9 +1,10 @@
 // Rough plates: the height field's statistics and periodicity, and what it does to a lone rod.
+#include "engine/plate_roughness.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
 
-#include "engine/plate_roughness.hpp"
 #include "engine/simulation.hpp"
 #include "paper_model.hpp"
 

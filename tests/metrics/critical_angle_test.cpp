@@ -51,9 +51,11 @@ TEST_CASE("theta_c only where the data bear it", "[metrics]") {
   CHECK_FALSE(unfilled.found);
   CHECK_THAT(unfilled.reason, Catch::Contains("below 0.1"));
   // Found, but eta at 80 degrees reached 90% of its level only at 120 s of 150: a caution.
-  std::vector<SweepPoint> rising = {
-      {60, 0.8, 20, 150}, {80, 0.7, 120, 150}, {100, 0.8, 30, 150}, {120, 0.1, 5, 150},
-      {140, 0.0, std::numeric_limits<double>::quiet_NaN(), 150}};
+  std::vector<SweepPoint> rising = {{60, 0.8, 20, 150},
+                                    {80, 0.7, 120, 150},
+                                    {100, 0.8, 30, 150},
+                                    {120, 0.1, 5, 150},
+                                    {140, 0.0, std::numeric_limits<double>::quiet_NaN(), 150}};
   const CriticalAngle late = critical_angle(rising);
   REQUIRE(late.found);
   CHECK_THAT(late.caution, Catch::Contains("at 80, eta was still rising") &&
@@ -65,5 +67,7 @@ TEST_CASE("theta_c only where the data bear it", "[metrics]") {
   CHECK(settled.caution.empty());
   // A plateau run that never reached 90% of its level is cautioned too.
   rising[0].levelled_at = std::numeric_limits<double>::quiet_NaN();
-  CHECK_THAT(critical_angle(rising).caution, Catch::Contains("at 60, eta never reached 90% of its final level in the runs (150 s)"));
+  CHECK_THAT(
+      critical_angle(rising).caution,
+      Catch::Contains("at 60, eta never reached 90% of its final level in the runs (150 s)"));
 }

@@ -1,8 +1,8 @@
 #include "scenarios/scenario.hpp"
 
-#include <catch2/catch.hpp>
 #include <sys/stat.h>
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -290,7 +290,8 @@ TEST_CASE("a missing file is an error, not an exception", "[scenario]") {
              Catch::Contains("no/such/file.yaml: cannot open the file"));
 }
 
-TEST_CASE("what is not a regular file of bounded size is refused without reading it", "[scenario]") {
+TEST_CASE("what is not a regular file of bounded size is refused without reading it",
+          "[scenario]") {
   const std::filesystem::path folder =
       std::filesystem::temp_directory_path() / "rodsort-scenario-file-kinds";
   std::filesystem::remove_all(folder);
