@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "engine/random_stream.hpp"
 #include "engine/segment_distance.hpp"
@@ -43,6 +45,62 @@ bool capsules_overlap(const Capsule& p, const Capsule& q, double box_x, double b
   if (d.norm() > p.reach + q.reach + kPlacementClearance) return false;
   return segment_distance(p.a, p.b, d + q.a, d + q.b) < contact;
 }
+
+/// The capsules placed so far, binned in a periodic grid whose cells are at least as wide as the
+/// largest reach twice plus the clearance: a candidate can only overlap capsules in its own cell
+/// and the eight around it (the reach test of capsules_overlap), so testing those gives the same
+/// answer as testing every capsule, in time independent of how many are placed.
+class PlacedCapsules {
+ public:
+  PlacedCapsules(double box_x, double box_y, double largest_reach)
+      : box_x_(box_x), box_y_(box_y) {
+    const double cell = 2.0 * largest_reach + kPlacementClearance;
+    nx_ = std::max(1, static_cast<int>(std::floor(box_x / cell)));
+    ny_ = std::max(1, static_cast<int>(std::floor(box_y / cell)));
+    // Fewer than three cells across would make a cell its own neighbour: one bin then.
+    if (nx_ < 3 || ny_ < 3) nx_ = ny_ = 1;
+    bins_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
+  }
+
+  bool overlaps(const Capsule& candidate) const {
+    const auto [ix, iy] = cell_of(candidate.center);
+    const int reach = nx_ == 1 ? 0 : 1;
+    for (int dx = -reach; dx <= reach; ++dx) {
+      for (int dy = -reach; dy <= reach; ++dy) {
+        for (const int other : bins_[bin(ix + dx, iy + dy)]) {
+          if (capsules_overlap(candidate, capsules_[static_cast<std::size_t>(other)], box_x_,
+                               box_y_)) {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
+  void add(const Capsule& capsule) {
+    const auto [ix, iy] = cell_of(capsule.center);
+    bins_[bin(ix, iy)].push_back(static_cast<int>(capsules_.size()));
+    capsules_.push_back(capsule);
+  }
+
+ private:
+  std::pair<int, int> cell_of(const Eigen::Vector2d& p) const {
+    return {static_cast<int>(std::floor(p.x() / box_x_ * nx_)),
+            static_cast<int>(std::floor(p.y() / box_y_ * ny_))};
+  }
+  std::size_t bin(int ix, int iy) const {
+    const int x = ((ix % nx_) + nx_) % nx_;
+    const int y = ((iy % ny_) + ny_) % ny_;
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) +
+           static_cast<std::size_t>(x);
+  }
+
+  double box_x_, box_y_;
+  int nx_ = 1, ny_ = 1;
+  std::vector<Capsule> capsules_;
+  std::vector<std::vector<int>> bins_;
+};
 
 bool capsule_hits_wall(const Capsule& c, const engine::Wall& wall, double box_x, double box_y) {
   const Eigen::Vector2d wall_center(wall.center_x, wall.center_y);
@@ -126,7 +184,11 @@ PlacementResult place_rods(const PlacementCell& cell, const std::vector<SpeciesP
   };
 
   PlacementResult result;
-  std::vector<Capsule> placed;
+  double largest_reach = 0.0;
+  for (const SpeciesPlacement& s : species) {
+    largest_reach = std::max(largest_reach, capsule_of(s.shape, {0.0, 0.0}, 0.0).reach);
+  }
+  PlacedCapsules placed(cell.box_x, cell.box_y, largest_reach);
   std::vector<int> placed_count(species.size(), 0);
   for (const int index : drawing_order(species)) {
     const SpeciesPlacement& s = species[static_cast<std::size_t>(index)];
@@ -154,11 +216,9 @@ PlacementResult place_rods(const PlacementCell& cell, const std::vector<SpeciesP
                        [&](const engine::Wall& wall) {
                          return capsule_hits_wall(capsule, wall, cell.box_x, cell.box_y);
                        }) &&
-          std::none_of(placed.begin(), placed.end(), [&](const Capsule& other) {
-            return capsules_overlap(capsule, other, cell.box_x, cell.box_y);
-          });
+          !placed.overlaps(capsule);
       if (free) {
-        placed.push_back(capsule);
+        placed.add(capsule);
         result.rods.push_back({s.species, center.x(), center.y(), heading});
         ++placed_count[static_cast<std::size_t>(index)];
         done = true;
