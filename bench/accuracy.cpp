@@ -26,14 +26,16 @@ double process_cpu_seconds() {
 }
 
 /// One rod A at the centre of a 30 mm cell, the paper's drive.
-engine::Model single_rod(double dt, double kick_eps, int solver_iterations, std::uint64_t seed) {
+engine::Model single_rod(double dt, const AccuracyOptions& options, std::uint64_t seed) {
   engine::Model model;
-  model.solver_iterations = solver_iterations;
+  model.solver_iterations = options.solver_iterations;
+  model.reverse_contact_order = options.reverse_contact_order;
+  model.fixed_sweep_order = options.fixed_sweep_order;
   model.box_x = model.box_y = 30.0;
   model.drive = engine::Drive::paper();
   model.dt = dt;
   model.seed = seed;
-  model.species.push_back(rod_a_species(kick_eps));
+  model.species.push_back(rod_a_species(options.kick_eps));
   model.rods.push_back({0, 15.0, 15.0, 0.0});
   return model;
 }
@@ -89,6 +91,13 @@ void add_accuracy_options(CLI::App& app, AccuracyOptions& options, bool& selecte
          "simulated time of the 319-rod cost measurement per dt in --accuracy, 0 to skip [s]")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  app.add_flag(
+      "--reverse-contact-order", options.reverse_contact_order,
+      "in --accuracy, the solver meets each rod's contacts in the reverse of the canonical "
+      "order (a check that results do not depend on it)");
+  app.add_flag("--fixed-sweep-order", options.fixed_sweep_order,
+               "in --accuracy, every solver sweep meets the contacts in the canonical order "
+               "instead of a random one");
 }
 
 AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
@@ -97,8 +106,8 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
   std::vector<double> speeds, diffusions;
   double events = 0.0, cpu = 0.0, simulated = 0.0;
   for (int rod = 0; rod < options.rods; ++rod) {
-    engine::Simulation simulation(single_rod(dt, options.kick_eps, options.solver_iterations,
-                                             options.seed + static_cast<std::uint64_t>(rod)));
+    engine::Simulation simulation(
+        single_rod(dt, options, options.seed + static_cast<std::uint64_t>(rod)));
     simulation.advance(std::llround(options.warmup / dt));
     const std::int64_t events_before = simulation.counters().kicks;
     const double cpu_start = process_cpu_seconds();

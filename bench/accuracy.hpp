@@ -27,6 +27,8 @@ struct AccuracyOptions {
   double kick_eps = 0.01;      ///< collision kick [1/mm]
   double cost_time = 0.05;     ///< simulated time of the 319-rod cost measurement, 0 to skip [s]
   int solver_iterations = 10;  ///< engine::Model::solver_iterations
+  bool reverse_contact_order = false;  ///< engine::Model::reverse_contact_order
+  bool fixed_sweep_order = false;      ///< engine::Model::fixed_sweep_order
   std::uint64_t seed = 1;
   bool csv = false;
 };

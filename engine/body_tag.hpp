@@ -19,6 +19,7 @@ struct BodyTag {
   const MaterialTable* materials;
   int rod = -1;                  ///< rod index for kRod and kImage
   int shift = -1;                ///< periodic shift index for kImage
+  int wall = -1;                 ///< wall index for kWall
   const PlateRoughness* roughness = nullptr;  ///< kBase and kLid: the surface, null when flat
 };
 

@@ -15,7 +15,6 @@
 // impulse, relative to the plate's velocity over the step.
 #include "engine/collision_kick.hpp"
 
-#include <BulletCollision/BroadphaseCollision/btDispatcher.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
@@ -36,13 +35,12 @@ void CollisionKick::save_velocities(const std::vector<btRigidBody*>& rods) {
   }
 }
 
-int CollisionKick::apply(btDispatcher& dispatcher, const std::vector<btRigidBody*>& rods,
-                         const std::vector<double>& kick_eps, std::vector<Touching>& touching,
-                         std::vector<RandomStream>& streams) {
+int CollisionKick::apply(btPersistentManifold* const* manifolds, int manifold_count,
+                         const std::vector<btRigidBody*>& rods, const std::vector<double>& kick_eps,
+                         std::vector<Touching>& touching, std::vector<RandomStream>& streams) {
   impacts_.assign(rods.size(), {});
-  const int manifold_count = dispatcher.getNumManifolds();
   for (int m = 0; m < manifold_count; ++m) {
-    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    const btPersistentManifold* manifold = manifolds[m];
     const auto* tag0 = static_cast<const BodyTag*>(manifold->getBody0()->getUserPointer());
     const auto* tag1 = static_cast<const BodyTag*>(manifold->getBody1()->getUserPointer());
     const bool rod_first = tag0->kind == BodyKind::kRod;

@@ -7,7 +7,7 @@
 
 #include "engine/random_stream.hpp"
 
-class btDispatcher;
+class btPersistentManifold;
 class btRigidBody;
 
 namespace rodsort::engine {
@@ -23,11 +23,12 @@ class CollisionKick {
   /// Call before the Bullet step: remembers the rods' velocities before the impact.
   void save_velocities(const std::vector<btRigidBody*>& rods);
 
-  /// Call after the Bullet step. Detects new contacts with the plates, applies the kicks of the
-  /// rods whose eps is non-zero, updates `touching`. Returns the number of collision events.
-  int apply(btDispatcher& dispatcher, const std::vector<btRigidBody*>& rods,
-            const std::vector<double>& kick_eps, std::vector<Touching>& touching,
-            std::vector<RandomStream>& streams);
+  /// Call after the Bullet step, with the manifolds the step solved in the solver's canonical
+  /// order (SolverBatches). Detects new contacts with the plates, applies the kicks of the rods
+  /// whose eps is non-zero, updates `touching`. Returns the number of collision events.
+  int apply(btPersistentManifold* const* manifolds, int manifold_count,
+            const std::vector<btRigidBody*>& rods, const std::vector<double>& kick_eps,
+            std::vector<Touching>& touching, std::vector<RandomStream>& streams);
 
  private:
   struct Impact {

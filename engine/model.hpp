@@ -64,6 +64,12 @@ struct Model {
   double dt = 1.0e-4;  ///< time step [s]
   std::uint64_t seed = 1;
   int solver_iterations = 10;
+  /// A diagnostic for tests and the benchmark: the solver meets each rod's contacts in the reverse
+  /// of the canonical order (solver_batches.cpp); results must agree within their errors.
+  bool reverse_contact_order = false;
+  /// A diagnostic for the benchmark: every solver sweep meets the contacts in the canonical order
+  /// instead of a random one (periodic_boundary.cpp, "Sweep order"), as Bullet does by default.
+  bool fixed_sweep_order = false;
 };
 
 }  // namespace rodsort::engine

@@ -3,10 +3,13 @@
 #include <BulletCollision/BroadphaseCollision/btOverlappingPairCache.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+
 #include <array>
 #include <cstdint>
 #include <deque>
 #include <vector>
+
+#include "engine/random_stream.hpp"
 
 class btRigidBody;
 
@@ -54,14 +57,26 @@ class PeriodicContactSolver : public btSequentialImpulseConstraintSolver {
   PeriodicContactSolver(const PeriodicCell& cell, const std::vector<btRigidBody*>& rods)
       : cell_(cell), rods_(rods) {}
 
+  /// Each sweep meets the contacts in a random order drawn from `stream` (periodic_boundary.cpp,
+  /// "Sweep order"); call before each step with a stream made from the seed and the step.
+  void start_step(const RandomStream& stream);
+  /// engine::Model::fixed_sweep_order.
+  void set_fixed_sweep_order(bool fixed) { fixed_sweep_order_ = fixed; }
+
  protected:
   void convertContacts(btPersistentManifold** manifolds, int manifold_count,
                        const btContactSolverInfo& info) override;
+  btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int body_count,
+                                btPersistentManifold** manifolds, int manifold_count,
+                                btTypedConstraint** constraints, int constraint_count,
+                                const btContactSolverInfo& info, btIDebugDraw* debug) override;
 
  private:
   const PeriodicCell& cell_;
   const std::vector<btRigidBody*>& rods_;
   std::deque<btPersistentManifold> translated_;  ///< live until the next step's conversion
+  RandomStream sweep_stream_{0, 0, StreamPurpose::kSolverOrder};
+  bool fixed_sweep_order_ = false;
 };
 
 }  // namespace rodsort::engine

@@ -17,7 +17,8 @@ enum class StreamPurpose : std::uint64_t {
   kCollisionKick = 1,
   kWhiteNoise = 2,
   kPlacement = 3,
-  kRoughness = 4
+  kRoughness = 4,
+  kSolverOrder = 5  ///< per step (index = step): the order of the contacts in each solver sweep
 };
 
 class RandomStream {

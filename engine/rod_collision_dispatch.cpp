@@ -13,6 +13,7 @@
 #include "engine/rod_plate_collision.hpp"
 #include "engine/rod_rod_collision.hpp"
 #include "engine/rod_wall_collision.hpp"
+#include "engine/surface_contacts.hpp"
 
 namespace rodsort::engine {
 
@@ -24,9 +25,12 @@ btDefaultCollisionConstructionInfo RodCollisionDispatch::configuration_info() {
   return info;
 }
 
-RodCollisionDispatch::RodCollisionDispatch(btCollisionDispatcher& dispatcher) {
+RodCollisionDispatch::RodCollisionDispatch(btCollisionDispatcher& dispatcher,
+                                           const RestoredContacts* restored) {
   rod_box_.rod_is_body0 = true;
   box_rod_.rod_is_body0 = false;
+  rod_box_.restored = restored;
+  box_rod_.restored = restored;
   dispatcher.registerCollisionCreateFunc(COMPOUND_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, &rod_box_);
   dispatcher.registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, COMPOUND_SHAPE_PROXYTYPE, &box_rod_);
   dispatcher.registerCollisionCreateFunc(COMPOUND_SHAPE_PROXYTYPE, COMPOUND_SHAPE_PROXYTYPE,
@@ -39,12 +43,16 @@ btCollisionAlgorithm* RodCollisionDispatch::RodBox::CreateCollisionAlgorithm(
   const btCollisionObjectWrapper* rod = rod_is_body0 ? body0 : body1;
   const btCollisionObjectWrapper* box = rod_is_body0 ? body1 : body0;
   const auto* tag = static_cast<const BodyTag*>(box->getCollisionObject()->getUserPointer());
+  const auto* rod_tag = static_cast<const BodyTag*>(rod->getCollisionObject()->getUserPointer());
+  const std::span<const SurfaceContactState> saved =
+      restored ? restored->of(rod_tag->rod, surface_of(*tag))
+               : std::span<const SurfaceContactState>();
   if (tag->kind == BodyKind::kWall) {
     void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodWallCollision));
-    return new (memory) RodWallCollision(info, rod, box, rod_is_body0);
+    return new (memory) RodWallCollision(info, rod, box, rod_is_body0, saved);
   }
   void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodPlateCollision));
-  return new (memory) RodPlateCollision(info, rod, rod_is_body0);
+  return new (memory) RodPlateCollision(info, rod, box, rod_is_body0, saved);
 }
 
 btCollisionAlgorithm* RodCollisionDispatch::RodRod::CreateCollisionAlgorithm(

@@ -11,6 +11,8 @@ class btCollisionDispatcher;
 
 namespace rodsort::engine {
 
+class RestoredContacts;
+
 class RodCollisionDispatch {
  public:
   /// Construction info for the world's btDefaultCollisionConfiguration: its algorithm pool must
@@ -18,7 +20,9 @@ class RodCollisionDispatch {
   static btDefaultCollisionConstructionInfo configuration_info();
 
   /// Registers the algorithms with `dispatcher`; this object must outlive the dispatcher's use.
-  explicit RodCollisionDispatch(btCollisionDispatcher& dispatcher);
+  /// A rod-plate or rod-wall algorithm, when it is created, takes its pair's manifolds from
+  /// `restored` (null: none), which must outlive the dispatcher's use too.
+  RodCollisionDispatch(btCollisionDispatcher& dispatcher, const RestoredContacts* restored);
 
   RodCollisionDispatch(const RodCollisionDispatch&) = delete;
   RodCollisionDispatch& operator=(const RodCollisionDispatch&) = delete;
@@ -27,6 +31,7 @@ class RodCollisionDispatch {
   /// A rod (compound) against a box: a plate or a wall, told apart by the box's BodyTag.
   struct RodBox : btCollisionAlgorithmCreateFunc {
     bool rod_is_body0 = true;
+    const RestoredContacts* restored = nullptr;
     btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
                                                    const btCollisionObjectWrapper* body0,
                                                    const btCollisionObjectWrapper* body1) override;

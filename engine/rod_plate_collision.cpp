@@ -32,15 +32,24 @@
 #include "engine/body_tag.hpp"
 #include "engine/plate_roughness.hpp"
 #include "engine/rod_geometry.hpp"
+#include "engine/surface_contacts.hpp"
 
 namespace rodsort::engine {
 
 RodPlateCollision::RodPlateCollision(const btCollisionAlgorithmConstructionInfo& info,
-                                     const btCollisionObjectWrapper* rod, bool rod_is_body0)
+                                     const btCollisionObjectWrapper* rod,
+                                     const btCollisionObjectWrapper* plate, bool rod_is_body0,
+                                     std::span<const SurfaceContactState> restored)
     : btCollisionAlgorithm(info),
       rod_is_body0_(rod_is_body0),
       manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr),
-      clear_(manifolds_.size(), 0) {}
+      clear_(manifolds_.size(), 0) {
+  for (const SurfaceContactState& saved : restored) {
+    btPersistentManifold*& manifold = manifolds_.at(static_cast<std::size_t>(saved.sphere));
+    manifold = m_dispatcher->getNewManifold(rod->getCollisionObject(), plate->getCollisionObject());
+    load_points(*manifold, saved);
+  }
+}
 
 RodPlateCollision::~RodPlateCollision() {
   for (btPersistentManifold* manifold : manifolds_) {

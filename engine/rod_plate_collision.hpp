@@ -2,7 +2,10 @@
 
 #include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 
+#include <span>
 #include <vector>
+
+#include "engine/state.hpp"
 
 class btPersistentManifold;
 class btTransform;
@@ -18,8 +21,10 @@ namespace rodsort::engine {
 /// analytically; see rod_plate_collision.cpp.
 class RodPlateCollision : public btCollisionAlgorithm {
  public:
+  /// `restored`: the manifolds this pair had when its State was saved (surface_contacts.hpp).
   RodPlateCollision(const btCollisionAlgorithmConstructionInfo& info,
-                    const btCollisionObjectWrapper* rod, bool rod_is_body0);
+                    const btCollisionObjectWrapper* rod, const btCollisionObjectWrapper* plate,
+                    bool rod_is_body0, std::span<const SurfaceContactState> restored);
   ~RodPlateCollision() override;
 
   void processCollision(const btCollisionObjectWrapper* body0,

@@ -29,12 +29,14 @@
 #include <cmath>
 
 #include "engine/rod_geometry.hpp"
+#include "engine/surface_contacts.hpp"
 
 namespace rodsort::engine {
 
 RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& info,
                                    const btCollisionObjectWrapper* rod,
-                                   const btCollisionObjectWrapper* wall, bool rod_is_body0)
+                                   const btCollisionObjectWrapper* wall, bool rod_is_body0,
+                                   std::span<const SurfaceContactState> restored)
     : btCollisionAlgorithm(info),
       rod_is_body0_(rod_is_body0),
       // As btCollisionDispatcher::getNewManifold computes it.
@@ -43,7 +45,13 @@ RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& i
                        gContactBreakingThreshold),
                    wall->getCollisionObject()->getCollisionShape()->getContactBreakingThreshold(
                        gContactBreakingThreshold))),
-      manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr) {}
+      manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr) {
+  for (const SurfaceContactState& saved : restored) {
+    btPersistentManifold*& manifold = manifolds_.at(static_cast<std::size_t>(saved.sphere));
+    manifold = m_dispatcher->getNewManifold(rod->getCollisionObject(), wall->getCollisionObject());
+    load_points(*manifold, saved);
+  }
+}
 
 RodWallCollision::~RodWallCollision() {
   for (btPersistentManifold*& manifold : manifolds_) release(manifold);

@@ -2,7 +2,10 @@
 
 #include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 
+#include <span>
 #include <vector>
+
+#include "engine/state.hpp"
 
 class btPersistentManifold;
 
@@ -12,9 +15,10 @@ namespace rodsort::engine {
 /// the box's frame; see rod_wall_collision.cpp.
 class RodWallCollision : public btCollisionAlgorithm {
  public:
+  /// `restored`: the manifolds this pair had when its State was saved (surface_contacts.hpp).
   RodWallCollision(const btCollisionAlgorithmConstructionInfo& info,
                    const btCollisionObjectWrapper* rod, const btCollisionObjectWrapper* wall,
-                   bool rod_is_body0);
+                   bool rod_is_body0, std::span<const SurfaceContactState> restored);
   ~RodWallCollision() override;
 
   void processCollision(const btCollisionObjectWrapper* body0,

@@ -22,6 +22,13 @@ class RodWorld : public btDiscreteDynamicsWorld {
  public:
   void synchronizeMotionStates() override;
 
+  /// engine::Model::reverse_contact_order.
+  void set_reverse_contact_order(bool reversed) { batches_.set_reversed(reversed); }
+
+  /// The manifolds the last step solved, in the solver's canonical order (solver_batches.cpp).
+  btPersistentManifold* const* solved_manifolds() const { return batches_.all_manifolds(); }
+  int solved_manifold_count() const { return batches_.all_manifold_count(); }
+
  private:
   SolverBatches batches_;
 };

@@ -37,6 +37,7 @@
 #include "engine/rod_collision_dispatch.hpp"
 #include "engine/rod_geometry.hpp"
 #include "engine/rod_world.hpp"
+#include "engine/surface_contacts.hpp"
 #include "engine/units.hpp"
 
 namespace rodsort::engine {
@@ -102,7 +103,8 @@ struct Simulation::Impl {
   std::unique_ptr<btDbvtBroadphase> broadphase;
   std::unique_ptr<PeriodicOverlapFilter> overlap_filter;
   std::unique_ptr<PeriodicContactSolver> solver;
-  std::unique_ptr<btDiscreteDynamicsWorld> world;
+  std::unique_ptr<RodWorld> world;
+  RestoredContacts restored_contacts;  ///< from the State, until the first step takes them
 
   std::unique_ptr<btRigidBody> base, lid;
   std::vector<std::unique_ptr<btRigidBody>> walls;
@@ -169,6 +171,15 @@ struct Simulation::Impl {
     }
   }
 
+  std::vector<int> sphere_counts() const {
+    std::vector<int> counts;
+    for (const RodInit& init : model.rods) {
+      counts.push_back(static_cast<int>(
+          model.species.at(static_cast<std::size_t>(init.species)).shape.spheres.size()));
+    }
+    return counts;
+  }
+
   State initial_state() const {
     State state;
     const double rest_height = drive.base_surface_z(0.0) + reach_of(base_roughness) + 0.01;
@@ -208,14 +219,17 @@ struct Simulation::Impl {
     configuration = std::make_unique<btDefaultCollisionConfiguration>(
         RodCollisionDispatch::configuration_info());
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
-    rod_collision = std::make_unique<RodCollisionDispatch>(*dispatcher);
+    restored_contacts.assign(state.contacts);
+    rod_collision = std::make_unique<RodCollisionDispatch>(*dispatcher, &restored_contacts);
     broadphase = std::make_unique<btDbvtBroadphase>();
     overlap_filter = std::make_unique<PeriodicOverlapFilter>();
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(overlap_filter.get());
     solver = std::make_unique<PeriodicContactSolver>(cell, rods);
+    solver->set_fixed_sweep_order(model.fixed_sweep_order);
     world = std::make_unique<RodWorld>(dispatcher.get(), broadphase.get(), solver.get(),
                                        configuration.get());
     world->setGravity(btVector3(0, 0, -kGravity));
+    world->set_reverse_contact_order(model.reverse_contact_order);
     // No continuous collision detection (DESIGN.md): this also keeps Bullet from widening each
     // rod's broadphase box by its predicted motion (see rod_world.cpp).
     world->getDispatchInfo().m_useContinuous = false;
@@ -250,6 +264,7 @@ struct Simulation::Impl {
     for (std::size_t w = 0; w < model.walls.size(); ++w) {
       const Wall& wall = model.walls[w];
       wall_tags.push_back({BodyKind::kWall, wall.material, &model.materials});
+      wall_tags.back().wall = static_cast<int>(w);
       btRigidBody::btRigidBodyConstructionInfo info_wall(0.0, nullptr, wall_shapes[w].get());
       auto body = std::make_unique<btRigidBody>(info_wall);
       btTransform transform(btQuaternion(btVector3(0, 0, 1), wall.yaw),
@@ -418,15 +433,24 @@ struct Simulation::Impl {
       body.setInterpolationWorldTransform(transform);
       body.setLinearVelocity(turn * body.getLinearVelocity());
       body.setAngularVelocity(turn * body.getAngularVelocity());
+      // The inertia tensor in the world's frame turns with the rod, as a restored rod's does.
+      body.updateInertiaTensor();
     }
   }
 
   void do_step() {
     wrap_and_refresh_images();
-    drive.place(*base, *lid, time + model.dt, false);
+    // At (step + 1) dt, the time a restored world computes for that step, not time + dt, which
+    // differs from it by rounding.
+    drive.place(*base, *lid, static_cast<double>(step + 1) * model.dt, false);
     kick.save_velocities(rods);
+    solver->start_step(
+        RandomStream(model.seed, static_cast<std::uint64_t>(step), StreamPurpose::kSolverOrder));
     world->stepSimulation(model.dt, 0, model.dt);
-    counters.kicks += kick.apply(*dispatcher, rods, kick_eps, touching, kick_streams);
+    // The collision algorithms were created, and took their restored contacts, in this step.
+    restored_contacts.clear();
+    counters.kicks += kick.apply(world->solved_manifolds(), world->solved_manifold_count(), rods,
+                                 kick_eps, touching, kick_streams);
     apply_white_noise();
     ++step;
     time = static_cast<double>(step) * model.dt;
@@ -450,6 +474,9 @@ struct Simulation::Impl {
       rs.noise_rng = noise_streams[i].state();
       state.rods.push_back(rs);
     }
+    // Before its first step a rebuilt world's contacts are still those it was given.
+    state.contacts =
+        restored_contacts.pending() ? restored_contacts.all() : save_surface_contacts(*dispatcher);
     return state;
   }
 };
@@ -496,7 +523,9 @@ Frame Simulation::frame() const {
 State Simulation::state() const { return impl_->current_state(); }
 
 void Simulation::restore(const State& state) {
-  check_state(state, impl_->model.rods.size());  // before the world is torn down
+  // Checked before the world is torn down.
+  check_state(state, impl_->model.rods.size(), 2 + static_cast<int>(impl_->model.walls.size()),
+              impl_->sphere_counts());
   impl_->destroy_world();
   impl_->build_world(state);
 }

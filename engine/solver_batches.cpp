@@ -12,16 +12,27 @@
 // do not interact inside the solver: every row changes only the velocities of its own two bodies,
 // and those of the plates and walls not at all (infinite mass). Solving island after island, each
 // with all its sweeps, therefore gives exactly the result of solving them all at once, as long as
-// each island's constraints keep their relative order, which they do here (the dispatcher's
-// order). Small islands, most of them single rods, are grouped into batches of about kTargetRods
-// rods so that each call to the solver does enough work; a batch holds whole islands only, so a
-// rod's contacts, and gravity, are applied in exactly one batch.
+// each island's constraints keep their relative order. Small islands, most of them single rods,
+// are grouped into batches of about kTargetRods rods so that each call to the solver does enough
+// work; a batch holds whole islands only, so a rod's contacts, and gravity, are applied in exactly
+// one batch.
+//
+// The order of the contacts. A sequential-impulse solver stopped after ten sweeps depends on the
+// order in which it meets the constraints, and the dispatcher's list of manifolds is in an order
+// that only the world's history decides (manifolds are appended as pairs are processed, in the
+// broadphase's order, and a released one is replaced by the last). A world rebuilt from a State
+// would meet its contacts in another order and drift away from the original. The manifolds are
+// therefore put in a canonical order first: by their lower rod, then by the two bodies (plates,
+// walls, rods, images) and the spheres of their first point. With that order and the persistent
+// contacts in the State (surface_contacts.cpp), a restored world steps exactly as the original.
 #include "engine/solver_batches.hpp"
 
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
+#include <algorithm>
 #include <cassert>
+#include <cstdint>
 
 #include "engine/body_tag.hpp"
 
@@ -34,7 +45,37 @@ int rod_of(const btCollisionObject* object) {
   return tag->kind == BodyKind::kRod || tag->kind == BodyKind::kImage ? tag->rod : -1;
 }
 
+/// Where a collision object comes in the canonical order of bodies: the base, the lid, the walls,
+/// then each rod followed by its images.
+std::uint64_t body_rank(const BodyTag& tag) {
+  constexpr std::uint64_t kRods = std::uint64_t{1} << 40;
+  switch (tag.kind) {
+    case BodyKind::kBase:
+      return 0;
+    case BodyKind::kLid:
+      return 1;
+    case BodyKind::kWall:
+      return 2 + static_cast<std::uint64_t>(tag.wall);
+    case BodyKind::kRod:
+      return kRods + static_cast<std::uint64_t>(tag.rod) * 16;
+    case BodyKind::kImage:
+      return kRods + static_cast<std::uint64_t>(tag.rod) * 16 + 1 + tag.shift;
+  }
+  return 0;
+}
+
+const BodyTag& tag_of(const btCollisionObject* object) {
+  return *static_cast<const BodyTag*>(object->getUserPointer());
+}
+
 }  // namespace
+
+bool SolverBatches::Key::operator<(const Key& other) const {
+  if (body0 != other.body0) return body0 < other.body0;
+  if (body1 != other.body1) return body1 < other.body1;
+  if (index0 != other.index0) return index0 < other.index0;
+  return index1 < other.index1;
+}
 
 int SolverBatches::root(int rod) {
   while (parent_[rod] != rod) {
@@ -44,18 +85,64 @@ int SolverBatches::root(int rod) {
   return rod;
 }
 
+void SolverBatches::sort_canonically(btPersistentManifold** manifolds, int manifold_count,
+                                     int rod_count) {
+  // Counting sort by lower rod (stable), then insertion sort of each rod's few manifolds by key.
+  owner_.resize(manifold_count);
+  owner_starts_.resize(0);
+  owner_starts_.resize(rod_count + 1, 0);
+  for (int m = 0; m < manifold_count; ++m) {
+    const btPersistentManifold& manifold = *manifolds[m];
+    if (manifold.getNumContacts() == 0) {
+      owner_[m] = -1;  // nothing to solve
+      continue;
+    }
+    const int rod0 = rod_of(manifold.getBody0());
+    const int rod1 = rod_of(manifold.getBody1());
+    owner_[m] = rod0 < 0 ? rod1 : (rod1 < 0 ? rod0 : std::min(rod0, rod1));
+    ++owner_starts_[owner_[m] + 1];
+  }
+  for (int r = 0; r < rod_count; ++r) owner_starts_[r + 1] += owner_starts_[r];
+  sorted_.resize(owner_starts_[rod_count]);
+  keys_.resize(sorted_.size());
+  fill_.resize(rod_count);
+  for (int r = 0; r < rod_count; ++r) fill_[r] = owner_starts_[r];
+  for (int m = 0; m < manifold_count; ++m) {
+    if (owner_[m] < 0) continue;
+    const btPersistentManifold& manifold = *manifolds[m];
+    const btManifoldPoint& first = manifold.getContactPoint(0);
+    const int slot = fill_[owner_[m]]++;
+    sorted_[slot] = manifolds[m];
+    keys_[slot] = {body_rank(tag_of(manifold.getBody0())), body_rank(tag_of(manifold.getBody1())),
+                   first.m_index0, first.m_index1};
+  }
+  for (int r = 0; r < rod_count; ++r) {
+    for (int i = owner_starts_[r] + 1; i < owner_starts_[r + 1]; ++i) {
+      const Key key = keys_[i];
+      btPersistentManifold* manifold = sorted_[i];
+      int j = i;
+      for (; j > owner_starts_[r] && (reversed_ ? keys_[j - 1] < key : key < keys_[j - 1]); --j) {
+        keys_[j] = keys_[j - 1];
+        sorted_[j] = sorted_[j - 1];
+      }
+      keys_[j] = key;
+      sorted_[j] = manifold;
+    }
+  }
+}
+
 void SolverBatches::build(const btAlignedObjectArray<btRigidBody*>& rods,
                           btPersistentManifold** manifolds, int manifold_count) {
   const int rod_count = rods.size();
+  sort_canonically(manifolds, manifold_count, rod_count);
+  const int sorted_count = sorted_.size();
   parent_.resize(rod_count);
   for (int r = 0; r < rod_count; ++r) parent_[r] = r;
-  manifold_batch_.resize(manifold_count);
-  for (int m = 0; m < manifold_count; ++m) {
-    const int rod0 = rod_of(manifolds[m]->getBody0());
-    const int rod1 = rod_of(manifolds[m]->getBody1());
-    // The manifold's island is known only once all unions are made; remember which rod to ask.
-    manifold_batch_[m] = manifolds[m]->getNumContacts() > 0 ? (rod0 >= 0 ? rod0 : rod1) : -1;
+  for (int m = 0; m < sorted_count; ++m) {
+    const int rod0 = rod_of(sorted_[m]->getBody0());
+    const int rod1 = rod_of(sorted_[m]->getBody1());
     if (rod0 >= 0 && rod1 >= 0) {
+      // Each set's root is its lowest rod, whatever the order of the unions.
       const int a = root(rod0), b = root(rod1);
       if (a != b) parent_[a < b ? b : a] = a < b ? a : b;
     }
@@ -89,29 +176,28 @@ void SolverBatches::build(const btAlignedObjectArray<btRigidBody*>& rods,
   const int batch_count = body_starts_.size() - 1;
 
   // Bodies by batch, in rod order within a batch.
-  btAlignedObjectArray<int>& fill = island_size_;  // reused as each batch's next free slot
-  fill.resize(batch_count);
-  for (int b = 0; b < batch_count; ++b) fill[b] = body_starts_[b];
+  fill_.resize(batch_count);
+  for (int b = 0; b < batch_count; ++b) fill_[b] = body_starts_[b];
   bodies_.resize(rod_count);
   for (int r = 0; r < rod_count; ++r) {
     assert(rod_of(rods[r]) == r);
-    bodies_[fill[batch_of_island_[island_of_root_[root(r)]]]++] = rods[r];
+    bodies_[fill_[batch_of_island_[island_of_root_[root(r)]]]++] = rods[r];
   }
 
-  // Manifolds by batch, in the dispatcher's order within a batch.
+  // Manifolds by batch, in the canonical order within a batch.
+  manifold_batch_.resize(sorted_count);
   manifold_starts_.resize(0);
   manifold_starts_.resize(batch_count + 1, 0);
-  for (int m = 0; m < manifold_count; ++m) {
-    if (manifold_batch_[m] < 0) continue;
-    manifold_batch_[m] = batch_of_island_[island_of_root_[root(manifold_batch_[m])]];
+  for (int m = 0; m < sorted_count; ++m) {
+    const int rod0 = rod_of(sorted_[m]->getBody0());
+    const int rod = rod0 >= 0 ? rod0 : rod_of(sorted_[m]->getBody1());
+    manifold_batch_[m] = batch_of_island_[island_of_root_[root(rod)]];
     ++manifold_starts_[manifold_batch_[m] + 1];
   }
   for (int b = 0; b < batch_count; ++b) manifold_starts_[b + 1] += manifold_starts_[b];
-  for (int b = 0; b < batch_count; ++b) fill[b] = manifold_starts_[b];
-  manifolds_.resize(manifold_starts_[batch_count]);
-  for (int m = 0; m < manifold_count; ++m) {
-    if (manifold_batch_[m] >= 0) manifolds_[fill[manifold_batch_[m]]++] = manifolds[m];
-  }
+  for (int b = 0; b < batch_count; ++b) fill_[b] = manifold_starts_[b];
+  manifolds_.resize(sorted_count);
+  for (int m = 0; m < sorted_count; ++m) manifolds_[fill_[manifold_batch_[m]]++] = sorted_[m];
 }
 
 }  // namespace rodsort::engine

@@ -2,6 +2,8 @@
 
 #include <LinearMath/btAlignedObjectArray.h>
 
+#include <cstdint>
+
 class btCollisionObject;
 class btPersistentManifold;
 class btRigidBody;
@@ -17,9 +19,13 @@ class SolverBatches {
   static constexpr int kTargetRods = 128;
 
   /// `rods` are the world's dynamic bodies (each carries a BodyTag of kind kRod); `manifolds` are
-  /// the dispatcher's, in its order.
+  /// the dispatcher's, in any order: the batches hold them in the canonical order.
   void build(const btAlignedObjectArray<btRigidBody*>& rods, btPersistentManifold** manifolds,
              int manifold_count);
+
+  /// A diagnostic: each rod's manifolds in the reverse of the canonical order, to check that
+  /// results do not depend on the order (engine::Model::reverse_contact_order).
+  void set_reversed(bool reversed) { reversed_ = reversed; }
 
   int size() const { return body_starts_.size() - 1; }
   btCollisionObject** bodies(int batch) { return &bodies_[body_starts_[batch]]; }
@@ -30,15 +36,35 @@ class SolverBatches {
   int manifold_count(int batch) const {
     return manifold_starts_[batch + 1] - manifold_starts_[batch];
   }
+  /// Every manifold with points, batch after batch, each in the canonical order.
+  btPersistentManifold* const* all_manifolds() const {
+    return manifolds_.size() > 0 ? &manifolds_[0] : nullptr;
+  }
+  int all_manifold_count() const { return manifolds_.size(); }
 
  private:
-  int root(int rod);
+  /// A manifold's place among those of its lower rod.
+  struct Key {
+    std::uint64_t body0, body1;  ///< ranks of the two bodies
+    int index0, index1;          ///< spheres of the first point
+    bool operator<(const Key& other) const;
+  };
 
+  int root(int rod);
+  /// Fills sorted_ with the manifolds that hold points, in the canonical order.
+  void sort_canonically(btPersistentManifold** manifolds, int manifold_count, int rod_count);
+
+  bool reversed_ = false;
+  btAlignedObjectArray<int> owner_;         ///< per dispatcher manifold: its lower rod, or -1
+  btAlignedObjectArray<int> owner_starts_;  ///< rod_count + 1 offsets into sorted_
+  btAlignedObjectArray<btPersistentManifold*> sorted_;
+  btAlignedObjectArray<Key> keys_;            ///< of sorted_
+  btAlignedObjectArray<int> fill_;            ///< next free slot, per rod or per batch
   btAlignedObjectArray<int> parent_;          ///< union-find over rods
   btAlignedObjectArray<int> island_of_root_;  ///< by root rod, -1 until numbered
   btAlignedObjectArray<int> batch_of_island_;
   btAlignedObjectArray<int> island_size_;
-  btAlignedObjectArray<int> manifold_batch_;  ///< per dispatcher manifold, -1 to skip
+  btAlignedObjectArray<int> manifold_batch_;  ///< per sorted manifold
   btAlignedObjectArray<btCollisionObject*> bodies_;
   btAlignedObjectArray<btPersistentManifold*> manifolds_;
   btAlignedObjectArray<int> body_starts_, manifold_starts_;  ///< size() + 1 offsets each

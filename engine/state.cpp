@@ -14,7 +14,7 @@
 namespace rodsort::engine {
 namespace {
 
-constexpr char kMagic[8] = {'R', 'O', 'D', 'S', 'T', 'A', 'T', '1'};
+constexpr char kMagic[8] = {'R', 'O', 'D', 'S', 'T', 'A', 'T', '2'};
 
 template <typename T>
 void put(std::ostream& out, const T& value) {
@@ -26,6 +26,37 @@ void get(std::istream& in, T& value) {
   in.read(reinterpret_cast<char*>(&value), sizeof(T));
   if (!in) throw std::runtime_error("state stream is truncated");
 }
+
+void put_point(std::ostream& out, const ContactPointState& point) {
+  put(out, point.local_a);
+  put(out, point.local_b);
+  put(out, point.world_a);
+  put(out, point.world_b);
+  put(out, point.normal);
+  put(out, point.friction_dir1);
+  put(out, point.friction_dir2);
+  put(out, point.distance);
+  put(out, point.combined);
+  put(out, point.solver);
+  put(out, point.ids);
+}
+
+void get_point(std::istream& in, ContactPointState& point) {
+  get(in, point.local_a);
+  get(in, point.local_b);
+  get(in, point.world_a);
+  get(in, point.world_b);
+  get(in, point.normal);
+  get(in, point.friction_dir1);
+  get(in, point.friction_dir2);
+  get(in, point.distance);
+  get(in, point.combined);
+  get(in, point.solver);
+  get(in, point.ids);
+}
+
+/// Bullet's manifolds hold at most four points.
+constexpr std::uint32_t kMaxPointsPerManifold = 4;
 
 }  // namespace
 
@@ -45,6 +76,14 @@ void write_state(std::ostream& out, const State& state) {
     put(out, touching);
     put(out, rod.kick_rng);
     put(out, rod.noise_rng);
+  }
+  put(out, static_cast<std::uint64_t>(state.contacts.size()));
+  for (const SurfaceContactState& contact : state.contacts) {
+    put(out, contact.rod);
+    put(out, contact.surface);
+    put(out, contact.sphere);
+    put(out, static_cast<std::uint32_t>(contact.points.size()));
+    for (const ContactPointState& point : contact.points) put_point(out, point);
   }
 }
 
@@ -74,6 +113,27 @@ State read_state(std::istream& in) {
     get(in, rod.kick_rng);
     get(in, rod.noise_rng);
   }
+  std::uint64_t contact_count = 0;
+  get(in, contact_count);
+  // A sphere has at most one manifold with each plate and wall; bounding by 1000 per rod keeps a
+  // corrupt count from allocating without limit (the contacts themselves are checked later).
+  if (contact_count > 1000 * std::max<std::uint64_t>(count, 1)) {
+    throw std::runtime_error("state claims an absurd number of contacts");
+  }
+  state.contacts.resize(contact_count);
+  for (SurfaceContactState& contact : state.contacts) {
+    get(in, contact.rod);
+    get(in, contact.surface);
+    get(in, contact.sphere);
+    std::uint32_t points = 0;
+    get(in, points);
+    if (points == 0 || points > kMaxPointsPerManifold) {
+      throw std::runtime_error("state has a contact manifold of " + std::to_string(points) +
+                               " points (1 to 4 expected)");
+    }
+    contact.points.resize(points);
+    for (ContactPointState& point : contact.points) get_point(in, point);
+  }
   return state;
 }
 
@@ -83,7 +143,8 @@ std::uint64_t hash_state(const State& state) {
   return fingerprint(bytes.str());
 }
 
-void check_state(const State& state, std::size_t rod_count) {
+void check_state(const State& state, std::size_t rod_count, int surface_count,
+                 const std::vector<int>& sphere_counts) {
   if (state.rods.size() != rod_count) {
     throw std::invalid_argument("the state has " + std::to_string(state.rods.size()) +
                                 " rods, the model " + std::to_string(rod_count));
@@ -112,6 +173,35 @@ void check_state(const State& state, std::size_t rod_count) {
           throw std::invalid_argument(which + ": its frame (basis) is not a rotation");
         }
       }
+    }
+  }
+  const auto key = [](const SurfaceContactState& c) {
+    return std::array<std::int32_t, 3>{c.rod, c.surface, c.sphere};
+  };
+  for (std::size_t k = 0; k < state.contacts.size(); ++k) {
+    const SurfaceContactState& contact = state.contacts[k];
+    const std::string which = "contact " + std::to_string(k) + " of the state";
+    if (contact.rod < 0 || static_cast<std::size_t>(contact.rod) >= rod_count ||
+        contact.surface < 0 || contact.surface >= surface_count || contact.sphere < 0 ||
+        contact.sphere >= sphere_counts.at(static_cast<std::size_t>(contact.rod))) {
+      throw std::invalid_argument(which + ": rod " + std::to_string(contact.rod) + ", surface " +
+                                  std::to_string(contact.surface) + ", sphere " +
+                                  std::to_string(contact.sphere) + " do not exist in the model");
+    }
+    if (k > 0 && !(key(state.contacts[k - 1]) < key(contact))) {
+      throw std::invalid_argument(which + ": out of order or repeated");
+    }
+    if (contact.points.empty() || contact.points.size() > kMaxPointsPerManifold) {
+      throw std::invalid_argument(which + ": " + std::to_string(contact.points.size()) +
+                                  " points (1 to 4 expected)");
+    }
+    for (const ContactPointState& point : contact.points) {
+      const bool finite = all_finite(point.local_a) && all_finite(point.local_b) &&
+                          all_finite(point.world_a) && all_finite(point.world_b) &&
+                          all_finite(point.normal) && all_finite(point.friction_dir1) &&
+                          all_finite(point.friction_dir2) && std::isfinite(point.distance) &&
+                          all_finite(point.combined) && all_finite(point.solver);
+      if (!finite) throw std::invalid_argument(which + ": a value is not finite");
     }
   }
 }

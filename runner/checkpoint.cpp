@@ -13,8 +13,9 @@
 namespace rodsort::runner {
 namespace {
 
-constexpr const char* kMagic = "rodsort-checkpoint 2";
-constexpr const char* kOldMagic = "rodsort-checkpoint 1";
+constexpr const char* kMagic = "rodsort-checkpoint 3";
+constexpr const char* kFormat1Magic = "rodsort-checkpoint 1";
+constexpr const char* kFormat2Magic = "rodsort-checkpoint 2";
 // The file ends with this line: "checksum " and 16 hex digits of the fingerprint of every byte
 // before it.
 constexpr std::string_view kChecksumPrefix = "checksum ";
@@ -78,10 +79,15 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
 Checkpoint read_checkpoint(const std::filesystem::path& path) {
   try {
     std::string bytes = read_file(path);
-    if (bytes.rfind(kOldMagic, 0) == 0) {
+    if (bytes.rfind(kFormat1Magic, 0) == 0) {
       throw std::runtime_error(
           "written by an older rodsort (format 1, without a checksum); "
           "resume it with that version, or start the run again");
+    }
+    if (bytes.rfind(kFormat2Magic, 0) == 0) {
+      throw std::runtime_error(
+          "written by an older rodsort (format 2, without the rods' contacts, which a run needs "
+          "to continue exactly); resume it with that version, or start the run again");
     }
     if (bytes.rfind(kMagic, 0) != 0) throw std::runtime_error("not a checkpoint");
     const std::size_t body = bytes.size() >= kChecksumLine ? bytes.size() - kChecksumLine : 0;

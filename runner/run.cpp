@@ -216,7 +216,6 @@ class RunSession {
           directory_ / snapshot_file_name(schedule_.snapshots[next_snapshot_].time_s));
       ++next_snapshot_;
     }
-    if (frame_due) simulation_.restore(simulation_.state());
     if (schedule_.is_checkpoint(step)) write_checkpoint_now();
   }
 

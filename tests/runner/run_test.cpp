@@ -131,6 +131,24 @@ TEST_CASE("the same scenario and seed give identical output files", "[runner][ru
         read_file(directory / "other-seed" / kRodsCsvFile));
 }
 
+TEST_CASE("how often frames are written does not change the trajectory", "[runner][run]") {
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "fine") == kExitOk);
+  REQUIRE(run_tiny(directory / "coarse", silent(),
+                   {"output.frame_interval=0.07", "output.checkpoint_interval=0.14"}) == kExitOk);
+  // The trajectory is written every 0.07 s in both.
+  CHECK(read_file(directory / "fine" / kTrajectoryFile) ==
+        read_file(directory / "coarse" / kTrajectoryFile));
+  // Every line of the coarse run's frames is in the fine run's, to the last digit.
+  const auto fine = lines_of(directory / "fine" / kRodsCsvFile);
+  const auto coarse = lines_of(directory / "coarse" / kRodsCsvFile);
+  REQUIRE(coarse.size() == 1 + 6 * kRods);
+  for (const std::string& line : coarse) {
+    INFO(line);
+    CHECK(count_of(fine, line) == 1);
+  }
+}
+
 TEST_CASE("a run stopped by SIGINT resumes to exactly the same files", "[runner][run][resume]") {
   TempDirectory directory;
   REQUIRE(run_tiny(directory / "whole") == kExitOk);
