@@ -51,14 +51,15 @@ constexpr const char* kTableHeader =
     "CPU-s/sim-s";
 constexpr const char* kCsvHeader =
     "dt_s,v0_mm_s,v0_sem_mm_s,Dr_rad2_s,Dr_sem_rad2_s,events_per_s,single_cpu_s_per_simulated_s,"
-    "cpu_s_per_simulated_s_319";
+    "cpu_s_per_simulated_s_319,events_sem_per_s";
 
 void write_row(std::ostream& out, const AccuracyResult& r, bool csv) {
   if (csv) {
     out << format("%.6g", r.dt) << ',' << format("%.4f", r.speed) << ','
         << format("%.4f", r.speed_error) << ',' << format("%.4f", r.diffusion) << ','
         << format("%.4f", r.diffusion_error) << ',' << format("%.1f", r.events_per_second) << ','
-        << format("%.5f", r.single_cpu_per_simulated) << ',' << format("%.4f", r.cost_319) << '\n';
+        << format("%.5f", r.single_cpu_per_simulated) << ',' << format("%.4f", r.cost_319) << ','
+        << format("%.2f", r.events_error) << '\n';
     return;
   }
   char line[160];
@@ -103,7 +104,7 @@ void add_accuracy_options(CLI::App& app, AccuracyOptions& options, bool& selecte
 AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
   const std::int64_t steps_per_frame = std::llround(kFrameInterval / dt);
   const int frame_count = static_cast<int>(std::lround(options.seconds / kFrameInterval)) + 1;
-  std::vector<double> speeds, diffusions;
+  std::vector<double> speeds, diffusions, event_rates;
   double events = 0.0, cpu = 0.0, simulated = 0.0;
   for (int rod = 0; rod < options.rods; ++rod) {
     engine::Simulation simulation(
@@ -120,6 +121,8 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
     const double elapsed = frames.back().time - frames.front().time;
     simulated += elapsed;
     events += static_cast<double>(simulation.counters().kicks - events_before);
+    event_rates.push_back(static_cast<double>(simulation.counters().kicks - events_before) /
+                          elapsed);
     speeds.push_back(metrics::mean_axial_speed(frames, {0}, 1));
     diffusions.push_back(metrics::rotational_diffusion(frames, {0}, kMinLag, kMaxLag).coefficient);
   }
@@ -132,6 +135,7 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
   result.diffusion = diffusion.mean;
   result.diffusion_error = diffusion.standard_error;
   result.events_per_second = events / simulated;
+  result.events_error = metrics::sample_statistics(event_rates).standard_error;
   result.single_cpu_per_simulated = cpu / simulated;
   if (options.cost_time > 0.0) {
     Options cost;

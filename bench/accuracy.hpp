@@ -40,6 +40,7 @@ struct AccuracyResult {
   double diffusion = 0.0;                 ///< D_r [rad^2/s]
   double diffusion_error = 0.0;           ///< [rad^2/s]
   double events_per_second = 0.0;         ///< collisions with base or lid per rod [1/s]
+  double events_error = 0.0;              ///< standard error over rods [1/s]
   double single_cpu_per_simulated = 0.0;  ///< one rod, CPU seconds per simulated second
   double cost_319 = 0.0;  ///< 319-rod system, CPU seconds per simulated second (0: not measured)
 };
