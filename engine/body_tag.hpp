@@ -3,6 +3,13 @@
 // its material, and for a rod or a periodic image the rod it stands for. Contact materials, the
 // periodic solver and the collision kick all read it.
 
+#include <BulletCollision/BroadphaseCollision/btDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+
+#include <algorithm>
+
 #include "engine/materials.hpp"
 #include "engine/plate_roughness.hpp"
 
@@ -23,8 +30,36 @@ struct BodyTag {
   const PlateRoughness* roughness = nullptr;  ///< kBase and kLid: the surface, null when flat
 };
 
-/// Makes Bullet combine friction and restitution by looking the pair up in the bodies' material
-/// table instead of multiplying per-body values. Idempotent.
+/// Every collision object of a simulation carries this mark in its user index 3 beside its tag, so
+/// that Bullet's process-wide material callbacks (contact_materials.cpp) know a simulation's bodies
+/// from those of any other Bullet world in the process.
+constexpr int kBodyTagMark = 0x726f6473;
+
+inline void attach_tag(btCollisionObject& object, BodyTag& tag) {
+  object.setUserPointer(&tag);
+  object.setUserIndex3(kBodyTagMark);
+}
+
+/// Makes Bullet combine friction and restitution of two tagged bodies by looking the pair up in
+/// their material table instead of multiplying per-body values; contacts of bodies without the
+/// mark are combined as before. Safe to call from any thread, any number of times.
 void install_material_table_callbacks();
+
+/// Contact-breaking distance factor. Bullet multiplies it by a shape's bounding radius (~2.4 mm for
+/// rod A), giving ~0.1 mm, well above 2 v dt for the speeds met at dt <= 1e-4 s. Set on every
+/// manifold the rod algorithms make, not through Bullet's global gContactBreakingThreshold, which
+/// other Bullet worlds in the process share.
+constexpr double kContactBreakingFactor = 0.04;
+
+/// A new manifold between `a` and `b`, with the contact-breaking distance Bullet's dispatcher
+/// would give it with kContactBreakingFactor as its global factor.
+inline btPersistentManifold* new_manifold(btDispatcher& dispatcher, const btCollisionObject* a,
+                                          const btCollisionObject* b) {
+  btPersistentManifold* manifold = dispatcher.getNewManifold(a, b);
+  manifold->setContactBreakingThreshold(
+      std::min(a->getCollisionShape()->getContactBreakingThreshold(kContactBreakingFactor),
+               b->getCollisionShape()->getContactBreakingThreshold(kContactBreakingFactor)));
+  return manifold;
+}
 
 }  // namespace rodsort::engine

@@ -46,7 +46,7 @@ RodPlateCollision::RodPlateCollision(const btCollisionAlgorithmConstructionInfo&
       clear_(manifolds_.size(), 0) {
   for (const SurfaceContactState& saved : restored) {
     btPersistentManifold*& manifold = manifolds_.at(static_cast<std::size_t>(saved.sphere));
-    manifold = m_dispatcher->getNewManifold(rod->getCollisionObject(), plate->getCollisionObject());
+    manifold = new_manifold(*m_dispatcher, rod->getCollisionObject(), plate->getCollisionObject());
     load_points(*manifold, saved);
   }
 }
@@ -96,7 +96,7 @@ void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
     const double center_y = axis.y() * geometry.axial[i] + origin.y();
     if (!manifold) {
       manifold =
-          m_dispatcher->getNewManifold(rod->getCollisionObject(), plate->getCollisionObject());
+          new_manifold(*m_dispatcher, rod->getCollisionObject(), plate->getCollisionObject());
     }
     if (rod_is_body0_) {
       result->setShapeIdentifiersA(-1, static_cast<int>(i));
@@ -172,7 +172,7 @@ void RodPlateCollision::process_rough(const PlateRoughness& roughness, bool base
     }
     if (!manifold) {
       manifold =
-          m_dispatcher->getNewManifold(rod->getCollisionObject(), plate->getCollisionObject());
+          new_manifold(*m_dispatcher, rod->getCollisionObject(), plate->getCollisionObject());
     }
     if (rod_is_body0_) {
       result->setShapeIdentifiersA(-1, static_cast<int>(i));

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 
+#include "engine/body_tag.hpp"
 #include "engine/rod_geometry.hpp"
 #include "engine/segment_distance.hpp"
 
@@ -117,7 +118,7 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
         spinning_friction = gCalculateCombinedSpinningFrictionCallback(object0, object1);
       }
       if (points % MANIFOLD_CACHE_SIZE == 0 && points / MANIFOLD_CACHE_SIZE == manifolds_.size()) {
-        manifolds_.push_back(m_dispatcher->getNewManifold(object1, object0));
+        manifolds_.push_back(new_manifold(*m_dispatcher, object1, object0));
       }
       btPersistentManifold& manifold = *manifolds_[points / MANIFOLD_CACHE_SIZE];
       btManifoldPoint point(object1->getWorldTransform().invXform(on_1),

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/body_tag.hpp"
 #include "engine/rod_geometry.hpp"
 #include "engine/surface_contacts.hpp"
 
@@ -39,16 +40,16 @@ RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& i
                                    std::span<const SurfaceContactState> restored)
     : btCollisionAlgorithm(info),
       rod_is_body0_(rod_is_body0),
-      // As btCollisionDispatcher::getNewManifold computes it.
+      // As new_manifold sets it.
       breaking_threshold_(
           std::min(rod->getCollisionObject()->getCollisionShape()->getContactBreakingThreshold(
-                       gContactBreakingThreshold),
+                       kContactBreakingFactor),
                    wall->getCollisionObject()->getCollisionShape()->getContactBreakingThreshold(
-                       gContactBreakingThreshold))),
+                       kContactBreakingFactor))),
       manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr) {
   for (const SurfaceContactState& saved : restored) {
     btPersistentManifold*& manifold = manifolds_.at(static_cast<std::size_t>(saved.sphere));
-    manifold = m_dispatcher->getNewManifold(rod->getCollisionObject(), wall->getCollisionObject());
+    manifold = new_manifold(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject());
     load_points(*manifold, saved);
   }
 }
@@ -121,8 +122,7 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
       continue;
     }
     if (!manifold) {
-      manifold =
-          m_dispatcher->getNewManifold(rod->getCollisionObject(), wall->getCollisionObject());
+      manifold = new_manifold(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject());
     }
     const btVector3 on_wall = wall_pose * (closest + normal * margin);
     if (rod_is_body0_) {

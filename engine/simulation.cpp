@@ -43,9 +43,6 @@
 namespace rodsort::engine {
 namespace {
 
-/// Contact-breaking distance factor. Bullet multiplies it by a shape's bounding radius
-/// (~2.4 mm for rod A), giving ~0.1 mm, well above 2 v dt for the speeds met at dt <= 1e-4 s.
-constexpr double kContactBreakingFactor = 0.04;
 /// Extra margin for images and plates beyond the reach of the largest rod [mm].
 constexpr double kReachMargin = 1.0;
 
@@ -133,7 +130,6 @@ struct Simulation::Impl {
         drive(model.drive, reach_of(base_roughness), reach_of(lid_roughness)),
         cell(model.box_x, model.box_y, 2.0 * largest_rod_reach(model) + kReachMargin) {
     install_material_table_callbacks();
-    gContactBreakingThreshold = kContactBreakingFactor;
     build_shapes();
     for (const RodInit& init : model.rods) {
       const Species& species = model.species.at(static_cast<std::size_t>(init.species));
@@ -205,7 +201,7 @@ struct Simulation::Impl {
     auto body = std::make_unique<btRigidBody>(info);
     body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
     body->setActivationState(DISABLE_DEACTIVATION);
-    body->setUserPointer(&tag);
+    attach_tag(*body, tag);
     btTransform transform;
     transform.setIdentity();
     transform.setOrigin(btVector3(model.box_x / 2, model.box_y / 2, 0));
@@ -270,7 +266,7 @@ struct Simulation::Impl {
       btTransform transform(btQuaternion(btVector3(0, 0, 1), wall.yaw),
                             btVector3(wall.center_x, wall.center_y, model.drive.gap / 2));
       body->setWorldTransform(transform);
-      body->setUserPointer(&wall_tags.back());
+      attach_tag(*body, wall_tags.back());
       world->addRigidBody(body.get(), kGroupWall, kGroupRod);
       walls.push_back(std::move(body));
     }
@@ -293,7 +289,7 @@ struct Simulation::Impl {
       body->updateInertiaTensor();
       body->setActivationState(DISABLE_DEACTIVATION);
       body->setContactProcessingThreshold(0.0);
-      body->setUserPointer(&rod_tags.back());
+      attach_tag(*body, rod_tags.back());
       const btTransform transform(to_bullet(rs.basis), to_bullet(rs.position));
       body->setWorldTransform(transform);
       body->setInterpolationWorldTransform(transform);
@@ -315,7 +311,7 @@ struct Simulation::Impl {
                               static_cast<int>(i), s});
         auto image = std::make_unique<btCollisionObject>();
         image->setCollisionShape(rods[i]->getCollisionShape());
-        image->setUserPointer(&image_tags.back());
+        attach_tag(*image, image_tags.back());
         image->setActivationState(DISABLE_DEACTIVATION);
         image->setContactProcessingThreshold(0.0);
         images.push_back(std::move(image));
