@@ -12,7 +12,9 @@
 // do not interact inside the solver: every row changes only the velocities of its own two bodies,
 // and those of the plates and walls not at all (infinite mass). Solving island after island, each
 // with all its sweeps, therefore gives exactly the result of solving them all at once, as long as
-// each island's constraints keep their relative order. Small islands, most of them single rods,
+// each island's constraints meet in the same order in every sweep; with the random sweep order
+// (periodic_boundary.cpp) the orders drawn depend on how islands are grouped into batches, so
+// the grouping is part of the deterministic method, not of the physics. Small islands, most of them single rods,
 // are grouped into batches of about kTargetRods rods so that each call to the solver does enough
 // work; a batch holds whole islands only, so a rod's contacts, and gravity, are applied in exactly
 // one batch.
