@@ -100,3 +100,38 @@ TEST_CASE("white angular noise gives the configured rotational diffusion", "[phy
     CHECK(measure(rod, 1.0e-4, 12, 20.0).rotational_diffusion == Approx(white_Dr).epsilon(0.10));
   }
 }
+
+TEST_CASE("the collision kick fires once per landing, with eps times the impact speed",
+          "[physics][noise][kick]") {
+  // Still plates far apart: a rod dropped flat from 1 mm lands, bounces a few times (restitution
+  // 0.1) and comes to rest on the base.
+  const double eps = 0.01;
+  Model model = testing::single_rod_model(testing::rod_species(preset_a_profile(), eps));
+  model.drive.amplitude = 0.0;
+  model.drive.gap = 5.0;
+  Simulation sim(model);
+  State raised = sim.state();
+  const double drop = 1.0;
+  raised.rods[0].position[2] += drop;
+  sim.restore(raised);
+
+  // The first event: the step whose solve stops the fall. The kick is the only source of spin.
+  int steps = 0;
+  while (sim.counters().kicks == 0 && steps < 10000) {
+    sim.step();
+    ++steps;
+  }
+  REQUIRE(sim.counters().kicks == 1);
+  const double impact_speed = std::sqrt(2.0 * rodsort::kGravity * (drop + 0.01));  // [mm/s]
+  const double spin = sim.frame().rods[0].angular_velocity.z();
+  INFO("omega_z after the landing: " << spin << " rad/s; eps v = " << eps * impact_speed);
+  CHECK(std::abs(spin) == Approx(eps * impact_speed).epsilon(0.03));
+
+  // The bounces, then rest: no event while the rod lies on the base.
+  sim.advance(5000);
+  const std::int64_t after_bounces = sim.counters().kicks;
+  CHECK(after_bounces >= 2);
+  CHECK(after_bounces <= 10);
+  sim.advance(5000);
+  CHECK(sim.counters().kicks == after_bounces);
+}
