@@ -7,6 +7,11 @@
 // lengths, 319 rods. Larger systems scale the cell's side and the arm by k and the rod count by
 // k^2, so that density and geometry stay the paper's. "single" is one free rod, the cost floor of
 // a step with nothing to collide with but the plates.
+//
+// "-full" systems are the same with the trap filled at the start: the state a trapping run spends
+// nearly all its time in. Rods are packed into the trap from the apex, in rows across the bisector,
+// each pointing its thin end at the apex, as many as fit with the placement clearance (about two
+// thirds of the rods); the others go on the lattice outside.
 
 #include <cstdint>
 #include <string>
@@ -21,6 +26,7 @@ struct SystemSpec {
   int rod_count;     ///< rods of type A
   double box;        ///< side of the periodic square cell [mm]
   double trap_arm;   ///< arm length of the V trap, 0 for no trap [mm]
+  bool full_trap = false;  ///< rods packed into the trap at the start
 };
 
 /// The paper's cell side, 19.3 rod lengths [mm].
@@ -37,7 +43,8 @@ inline constexpr double kPaperKickEps = 0.01;
 /// Rod A of brass with the collision kick `kick_eps` [1/mm].
 engine::Species rod_a_species(double kick_eps);
 
-/// single, then the paper's system with side x1, x2, x4 (319, 1,276, 5,104 rods).
+/// single, the paper's system with side x1, x2, x4 (319, 1,276, 5,104 rods), then the same three
+/// with a full trap (319-full, 1276-full, 5104-full).
 std::vector<SystemSpec> standard_systems();
 
 /// The standard system of that name; throws std::invalid_argument naming the known ones.

@@ -33,7 +33,7 @@ double gap(const engine::Model& model, const engine::RodInit& a, const engine::R
 
 TEST_CASE("standard systems keep the paper's density and trap", "[bench]") {
   const auto systems = standard_systems();
-  REQUIRE(systems.size() == 4);
+  REQUIRE(systems.size() == 7);
   CHECK(find_system("319").box == Approx(86.85));
   for (const SystemSpec& system : systems) {
     if (system.name == "single") continue;
@@ -45,7 +45,9 @@ TEST_CASE("standard systems keep the paper's density and trap", "[bench]") {
 }
 
 TEST_CASE("rods start inside the cell without touching each other", "[bench]") {
-  const engine::Model model = build_model(find_system("1276"), 1e-4, 3);
+  const std::string name = GENERATE(as<std::string>{}, "1276", "1276-full");
+  INFO(name);
+  const engine::Model model = build_model(find_system(name), 1e-4, 3);
   REQUIRE(model.rods.size() == 1276);
   CHECK(model.walls.size() == 3);
   for (std::size_t i = 0; i < model.rods.size(); ++i) {
@@ -68,4 +70,27 @@ TEST_CASE("placement is reproducible from the seed", "[bench]") {
   CHECK(a.rods.front().x == b.rods.front().x);
   CHECK(a.rods.back().heading == b.rods.back().heading);
   CHECK(a.rods.front().x != c.rods.front().x);
+}
+
+TEST_CASE("a full-trap system starts with its trap packed", "[bench]") {
+  for (const char* name : {"319-full", "1276-full", "5104-full"}) {
+    const SystemSpec system = find_system(name);
+    const engine::Model model = build_model(system, 1e-4, 3);
+    REQUIRE(static_cast<int>(model.rods.size()) == system.rod_count);
+    // Rods whose centre lies in the trap's triangle: apex at the cell's centre less half the
+    // trap's depth along +x (the bisector of centered_v_trap), opening 120 degrees.
+    const double depth = system.trap_arm * std::cos(degrees_to_radians(60.0));
+    const double apex_x = system.box / 2.0 - depth / 2.0;
+    int inside = 0;
+    for (const engine::RodInit& rod : model.rods) {
+      const double along = rod.x - apex_x;
+      const double across = std::abs(rod.y - system.box / 2.0);
+      inside += along > 0.0 && along < depth && across < along * std::tan(degrees_to_radians(60.0));
+    }
+    INFO(name << ": " << inside << " of " << system.rod_count << " rods in the trap");
+    // The packed rods cover most of the triangle's area (each takes about 4.6 x 1.15 mm^2).
+    const double area =
+        0.5 * system.trap_arm * system.trap_arm * std::sin(degrees_to_radians(120.0));
+    CHECK(inside * 4.6 * 1.15 > 0.5 * area);
+  }
 }
