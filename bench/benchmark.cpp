@@ -54,7 +54,8 @@ std::string format(const char* pattern, double value) {
 void add_options(CLI::App& app, Options& options) {
   app.add_option("--systems", options.systems,
                  "systems to run, smallest first: single (one free rod), 319, 1276, 5104 (the "
-                 "paper's trap system, side x1, x2, x4)")
+                 "paper's trap system, side x1, x2, x4), 319-full, 1276-full, 5104-full (the "
+                 "same with the trap packed at the start)")
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--dt", options.dt, "time step [s]")
