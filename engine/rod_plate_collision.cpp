@@ -94,19 +94,9 @@ void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
     }
     const double center_x = axis.x() * geometry.axial[i] + origin.x();
     const double center_y = axis.y() * geometry.axial[i] + origin.y();
-    if (!manifold) {
-      manifold =
-          new_manifold(*m_dispatcher, rod->getCollisionObject(), plate->getCollisionObject());
-    }
-    if (rod_is_body0_) {
-      result->setShapeIdentifiersA(-1, static_cast<int>(i));
-    } else {
-      result->setShapeIdentifiersB(-1, static_cast<int>(i));
-    }
-    result->setPersistentManifold(manifold);
-    result->refreshContactPoints();
-    result->addContactPoint(normal, btVector3(center_x, center_y, surface), depth);
-    result->refreshContactPoints();
+    add_sphere_contact(*m_dispatcher, manifold, rod->getCollisionObject(),
+                       plate->getCollisionObject(), rod_is_body0_, static_cast<int>(i), *result,
+                       normal, btVector3(center_x, center_y, surface), depth);
   }
   // Manifolds of spheres that left the plate go only after the new ones were made, as with
   // Bullet's compound algorithm: the dispatcher's list, and so the order in which the solver meets
@@ -170,19 +160,9 @@ void RodPlateCollision::process_rough(const PlateRoughness& roughness, bool base
       kept += manifold != nullptr;
       continue;
     }
-    if (!manifold) {
-      manifold =
-          new_manifold(*m_dispatcher, rod->getCollisionObject(), plate->getCollisionObject());
-    }
-    if (rod_is_body0_) {
-      result->setShapeIdentifiersA(-1, static_cast<int>(i));
-    } else {
-      result->setShapeIdentifiersB(-1, static_cast<int>(i));
-    }
-    result->setPersistentManifold(manifold);
-    result->refreshContactPoints();
-    result->addContactPoint(contact.normal, contact.point, contact.depth);
-    result->refreshContactPoints();
+    add_sphere_contact(*m_dispatcher, manifold, rod->getCollisionObject(),
+                       plate->getCollisionObject(), rod_is_body0_, static_cast<int>(i), *result,
+                       contact.normal, contact.point, contact.depth);
   }
   // Released after the new ones were made, as on a flat plate (below).
   for (std::size_t i = 0; kept > 0 && i < manifolds_.size(); ++i) {

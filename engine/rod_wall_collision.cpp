@@ -121,19 +121,10 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
       release(manifold);
       continue;
     }
-    if (!manifold) {
-      manifold = new_manifold(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject());
-    }
     const btVector3 on_wall = wall_pose * (closest + normal * margin);
-    if (rod_is_body0_) {
-      result->setShapeIdentifiersA(-1, static_cast<int>(i));
-    } else {
-      result->setShapeIdentifiersB(-1, static_cast<int>(i));
-    }
-    result->setPersistentManifold(manifold);
-    result->refreshContactPoints();
-    result->addContactPoint(wall_pose.getBasis() * normal, on_wall, depth);
-    result->refreshContactPoints();
+    add_sphere_contact(*m_dispatcher, manifold, rod->getCollisionObject(),
+                       wall->getCollisionObject(), rod_is_body0_, static_cast<int>(i), *result,
+                       wall_pose.getBasis() * normal, on_wall, depth);
   }
 }
 

@@ -37,6 +37,7 @@
 #include <cstdint>
 
 #include "engine/body_tag.hpp"
+#include "engine/surface_contacts.hpp"
 
 namespace rodsort::engine {
 namespace {
@@ -51,19 +52,11 @@ int rod_of(const btCollisionObject* object) {
 /// then each rod followed by its images.
 std::uint64_t body_rank(const BodyTag& tag) {
   constexpr std::uint64_t kRods = std::uint64_t{1} << 40;
-  switch (tag.kind) {
-    case BodyKind::kBase:
-      return 0;
-    case BodyKind::kLid:
-      return 1;
-    case BodyKind::kWall:
-      return 2 + static_cast<std::uint64_t>(tag.wall);
-    case BodyKind::kRod:
-      return kRods + static_cast<std::uint64_t>(tag.rod) * 16;
-    case BodyKind::kImage:
-      return kRods + static_cast<std::uint64_t>(tag.rod) * 16 + 1 + tag.shift;
+  if (tag.kind == BodyKind::kRod) return kRods + static_cast<std::uint64_t>(tag.rod) * 16;
+  if (tag.kind == BodyKind::kImage) {
+    return kRods + static_cast<std::uint64_t>(tag.rod) * 16 + 1 + static_cast<std::uint64_t>(tag.shift);
   }
-  return 0;
+  return static_cast<std::uint64_t>(surface_of(tag));  // the base, the lid, the walls
 }
 
 const BodyTag& tag_of(const btCollisionObject* object) {

@@ -11,6 +11,7 @@
 
 #include <BulletCollision/BroadphaseCollision/btDispatcher.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include <algorithm>
@@ -145,6 +146,22 @@ std::span<const SurfaceContactState> RestoredContacts::of(int rod, int surface) 
       first, contacts_.end(), wanted,
       [](const auto& w, const SurfaceContactState& c) { return w < std::pair(c.rod, c.surface); });
   return {first, last};
+}
+
+void add_sphere_contact(btDispatcher& dispatcher, btPersistentManifold*& manifold,
+                        const btCollisionObject* rod, const btCollisionObject* surface,
+                        bool rod_is_body0, int sphere, btManifoldResult& result,
+                        const btVector3& normal, const btVector3& point, double depth) {
+  if (!manifold) manifold = new_manifold(dispatcher, rod, surface);
+  if (rod_is_body0) {
+    result.setShapeIdentifiersA(-1, sphere);
+  } else {
+    result.setShapeIdentifiersB(-1, sphere);
+  }
+  result.setPersistentManifold(manifold);
+  result.refreshContactPoints();
+  result.addContactPoint(normal, point, depth);
+  result.refreshContactPoints();
 }
 
 void load_points(btPersistentManifold& manifold, const SurfaceContactState& saved) {

@@ -8,8 +8,11 @@
 
 #include "engine/state.hpp"
 
+class btCollisionObject;
 class btDispatcher;
+class btManifoldResult;
 class btPersistentManifold;
+class btVector3;
 
 namespace rodsort::engine {
 
@@ -42,5 +45,14 @@ class RestoredContacts {
 
 /// Fills an empty manifold with a saved manifold's points, every field as it was.
 void load_points(btPersistentManifold& manifold, const SurfaceContactState& saved);
+
+/// Adds the contact of sphere `sphere` of `rod` with a plate or wall `surface` to the sphere's own
+/// persistent manifold (made on its first contact), refreshed and merged by Bullet's
+/// btManifoldResult as Bullet's compound algorithm does. `normal` on the surface, toward the rod;
+/// `point` on the surface; `depth` negative when penetrating [mm].
+void add_sphere_contact(btDispatcher& dispatcher, btPersistentManifold*& manifold,
+                        const btCollisionObject* rod, const btCollisionObject* surface,
+                        bool rod_is_body0, int sphere, btManifoldResult& result,
+                        const btVector3& normal, const btVector3& point, double depth);
 
 }  // namespace rodsort::engine
