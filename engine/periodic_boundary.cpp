@@ -26,10 +26,9 @@
 // direction along the rod, and it biases the rod's motion: sweeping the contacts of rod A from one
 // end or from the other gave D_r = 0.137 or 0.075 rad^2/s and v0 = 13.7 or 14.3 mm/s at dt = 1e-4
 // s, 24 rods each (docs/model.md, "Contact order in the solver"). Each sweep therefore meets the
-// contacts in a random order,
-// drawn from a stream seeded by the scenario's seed and the step (StreamPurpose::kSolverOrder), so
-// that the order carries no direction and a restored world draws the same orders; both end-to-end
-// orders then give the same D_r and v0 within their errors.
+// contacts in a random order, drawn from a stream seeded by the scenario's seed and the step
+// (StreamPurpose::kSolverOrder), so that the order carries no direction and a restored world draws
+// the same orders; both end-to-end orders then give the same D_r and v0 within their errors.
 #include "engine/periodic_boundary.hpp"
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
@@ -113,18 +112,20 @@ btScalar PeriodicContactSolver::solveSingleIteration(
   // friction rows kept right after it, as the interleaved solver mode expects. Bullet's own
   // SOLVER_RANDMIZE_ORDER shuffles the friction rows independently of their contacts, which would
   // bound a friction row by another contact's normal impulse.
-  const int count = m_tmpSolverContactConstraintPool.size();
-  for (int c = 0; c < count && !fixed_sweep_order_; ++c) m_orderTmpConstraintPool[c] = c;
-  for (int c = count - 1; c > 0 && !fixed_sweep_order_; --c) {
-    const auto bound = static_cast<std::uint64_t>(c + 1);
-    const int pick = static_cast<int>(((sweep_stream_.next() >> 32) * bound) >> 32);
-    std::swap(m_orderTmpConstraintPool[c], m_orderTmpConstraintPool[pick]);
-  }
-  for (int c = 0; c < count && !fixed_sweep_order_; ++c) {
-    const int friction =
-        m_tmpSolverContactConstraintPool[m_orderTmpConstraintPool[c]].m_frictionIndex;
-    m_orderFrictionConstraintPool[2 * c] = friction;
-    m_orderFrictionConstraintPool[2 * c + 1] = friction + 1;
+  if (!fixed_sweep_order_) {
+    const int count = m_tmpSolverContactConstraintPool.size();
+    for (int c = 0; c < count; ++c) m_orderTmpConstraintPool[c] = c;
+    for (int c = count - 1; c > 0; --c) {
+      const auto bound = static_cast<std::uint64_t>(c + 1);
+      const int pick = static_cast<int>(((sweep_stream_.next() >> 32) * bound) >> 32);
+      std::swap(m_orderTmpConstraintPool[c], m_orderTmpConstraintPool[pick]);
+    }
+    for (int c = 0; c < count; ++c) {
+      const int friction =
+          m_tmpSolverContactConstraintPool[m_orderTmpConstraintPool[c]].m_frictionIndex;
+      m_orderFrictionConstraintPool[2 * c] = friction;
+      m_orderFrictionConstraintPool[2 * c + 1] = friction + 1;
+    }
   }
   return btSequentialImpulseConstraintSolver::solveSingleIteration(
       iteration, bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info,

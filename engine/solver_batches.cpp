@@ -13,11 +13,11 @@
 // and those of the plates and walls not at all (infinite mass). Solving island after island, each
 // with all its sweeps, therefore gives exactly the result of solving them all at once, as long as
 // each island's constraints meet in the same order in every sweep; with the random sweep order
-// (periodic_boundary.cpp) the orders drawn depend on how islands are grouped into batches, so
-// the grouping is part of the deterministic method, not of the physics. Small islands, most of them single rods,
-// are grouped into batches of about kTargetRods rods so that each call to the solver does enough
-// work; a batch holds whole islands only, so a rod's contacts, and gravity, are applied in exactly
-// one batch.
+// (periodic_boundary.cpp) the orders drawn depend on how islands are grouped into batches, so the
+// grouping is part of the deterministic method, not of the physics. Small islands, most of them
+// single rods, are grouped into batches of about kTargetRods rods so that each call to the solver
+// does enough work; a batch holds whole islands only, so a rod's contacts, and gravity, are
+// applied in exactly one batch.
 //
 // The order of the contacts. A sequential-impulse solver stopped after ten sweeps depends on the
 // order in which it meets the constraints, and the dispatcher's list of manifolds is in an order
@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdint>
+#include <tuple>
 
 #include "engine/body_tag.hpp"
 #include "engine/surface_contacts.hpp"
@@ -42,34 +43,31 @@
 namespace rodsort::engine {
 namespace {
 
+const BodyTag& tag_of(const btCollisionObject* object) {
+  return *static_cast<const BodyTag*>(object->getUserPointer());
+}
+
 /// The rod a collision object stands for (a rod or its periodic image), or -1.
 int rod_of(const btCollisionObject* object) {
-  const auto* tag = static_cast<const BodyTag*>(object->getUserPointer());
-  return tag->kind == BodyKind::kRod || tag->kind == BodyKind::kImage ? tag->rod : -1;
+  const BodyTag& tag = tag_of(object);
+  return tag.kind == BodyKind::kRod || tag.kind == BodyKind::kImage ? tag.rod : -1;
 }
 
 /// Where a collision object comes in the canonical order of bodies: the base, the lid, the walls,
 /// then each rod followed by its images.
 std::uint64_t body_rank(const BodyTag& tag) {
-  constexpr std::uint64_t kRods = std::uint64_t{1} << 40;
-  if (tag.kind == BodyKind::kRod) return kRods + static_cast<std::uint64_t>(tag.rod) * 16;
-  if (tag.kind == BodyKind::kImage) {
-    return kRods + static_cast<std::uint64_t>(tag.rod) * 16 + 1 + static_cast<std::uint64_t>(tag.shift);
+  if (tag.kind != BodyKind::kRod && tag.kind != BodyKind::kImage) {
+    return static_cast<std::uint64_t>(surface_of(tag));  // the base, the lid, the walls
   }
-  return static_cast<std::uint64_t>(surface_of(tag));  // the base, the lid, the walls
-}
-
-const BodyTag& tag_of(const btCollisionObject* object) {
-  return *static_cast<const BodyTag*>(object->getUserPointer());
+  const std::uint64_t rod = (std::uint64_t{1} << 40) + static_cast<std::uint64_t>(tag.rod) * 16;
+  return tag.kind == BodyKind::kRod ? rod : rod + 1 + static_cast<std::uint64_t>(tag.shift);
 }
 
 }  // namespace
 
 bool SolverBatches::Key::operator<(const Key& other) const {
-  if (body0 != other.body0) return body0 < other.body0;
-  if (body1 != other.body1) return body1 < other.body1;
-  if (index0 != other.index0) return index0 < other.index0;
-  return index1 < other.index1;
+  return std::tie(body0, body1, index0, index1) <
+         std::tie(other.body0, other.body1, other.index0, other.index1);
 }
 
 int SolverBatches::root(int rod) {
