@@ -70,6 +70,9 @@ struct Model {
   /// A diagnostic for the benchmark: every solver sweep meets the contacts in the canonical order
   /// instead of a random one (periodic_boundary.cpp, "Sweep order"), as Bullet does by default.
   bool fixed_sweep_order = false;
+  /// A diagnostic for tests: the solver takes every contact island in one call instead of batch by
+  /// batch (solver_batches.cpp); with fixed_sweep_order the results must be bit for bit the same.
+  bool single_solver_batch = false;
 };
 
 }  // namespace rodsort::engine

@@ -15,7 +15,8 @@
 //    islands serve deactivation (disabled for every body) and splitting the solver's work by
 //    island, which Bullet cannot do right across periodic images (periodic_boundary.cpp). The
 //    engine makes its own islands, which know the images, and hands them to the solver batch by
-//    batch (solver_batches.cpp), with the same result as one call with everything.
+//    batch (solver_batches.cpp), with the same result as one call with everything when the sweep
+//    order is fixed (tests/engine/solver_batches_test.cpp).
 //  - updateActivationState and synchronizeMotionStates: deactivation is disabled for every body,
 //    and no body has a motion state.
 #include "engine/rod_world.hpp"

@@ -24,6 +24,8 @@ class RodWorld : public btDiscreteDynamicsWorld {
 
   /// engine::Model::reverse_contact_order.
   void set_reverse_contact_order(bool reversed) { batches_.set_reversed(reversed); }
+  /// engine::Model::single_solver_batch.
+  void set_single_solver_batch(bool single) { batches_.set_single_batch(single); }
 
   /// The manifolds the last step solved, in the solver's canonical order (solver_batches.cpp).
   btPersistentManifold* const* solved_manifolds() const { return batches_.all_manifolds(); }

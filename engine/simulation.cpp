@@ -226,6 +226,7 @@ struct Simulation::Impl {
                                        configuration.get());
     world->setGravity(btVector3(0, 0, -kGravity));
     world->set_reverse_contact_order(model.reverse_contact_order);
+    world->set_single_solver_batch(model.single_solver_batch);
     // No continuous collision detection (DESIGN.md): this also keeps Bullet from widening each
     // rod's broadphase box by its predicted motion (see rod_world.cpp).
     world->getDispatchInfo().m_useContinuous = false;

@@ -158,7 +158,7 @@ void SolverBatches::build(const btAlignedObjectArray<btRigidBody*>& rods,
   body_starts_.push_back(0);
   int in_batch = 0;
   for (int i = 0; i < island_size_.size(); ++i) {
-    if (in_batch >= kTargetRods) {
+    if (in_batch >= kTargetRods && !single_batch_) {
       body_starts_.push_back(body_starts_[body_starts_.size() - 1] + in_batch);
       in_batch = 0;
     }

@@ -26,6 +26,9 @@ class SolverBatches {
   /// A diagnostic: each rod's manifolds in the reverse of the canonical order, to check that
   /// results do not depend on the order (engine::Model::reverse_contact_order).
   void set_reversed(bool reversed) { reversed_ = reversed; }
+  /// A diagnostic: all islands in one batch, to check that batching changes nothing
+  /// (engine::Model::single_solver_batch).
+  void set_single_batch(bool single) { single_batch_ = single; }
 
   int size() const { return body_starts_.size() - 1; }
   btCollisionObject** bodies(int batch) { return &bodies_[body_starts_[batch]]; }
@@ -55,6 +58,7 @@ class SolverBatches {
   void sort_canonically(btPersistentManifold** manifolds, int manifold_count, int rod_count);
 
   bool reversed_ = false;
+  bool single_batch_ = false;
   btAlignedObjectArray<int> owner_;         ///< per dispatcher manifold: its lower rod, or -1
   btAlignedObjectArray<int> owner_starts_;  ///< rod_count + 1 offsets into sorted_
   btAlignedObjectArray<btPersistentManifold*> sorted_;
