@@ -60,10 +60,12 @@ std::vector<engine::RodInit> pack_in_trap(const engine::RodShape& shape, const t
     // With heading = bisector + pi, body axial a lies at -a along the bisector from the centre:
     // the thin end (largest axial) is nearest the apex.
     const double centre_along = tip + axial_max;
-    // Across the row: every sphere, at s along the bisector, within |y| + r + clearance <= s slope.
+    // Across the row: every sphere, at s along the bisector, r + clearance from the inner face,
+    // which lies (s slope - |y|) cos(theta / 2) from a point at y.
     double room = 1e300;
     for (const engine::Sphere& sphere : shape.spheres) {
-      room = std::min(room, (centre_along - sphere.axial) * slope - sphere.radius - clearance);
+      room = std::min(room, (centre_along - sphere.axial) * slope -
+                                (sphere.radius + clearance) / std::cos(trap.opening_angle() / 2.0));
     }
     if (room < 0.0) continue;
     const int beside = static_cast<int>(std::floor(room / spacing));
