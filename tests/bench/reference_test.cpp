@@ -1,7 +1,8 @@
 // Rod A's single-rod figures against their reference (tests/golden/single-rod.csv, made by
 // scripts/single-rod-reference from rods the test does not use): the speed, the rotational
-// diffusion and the collision rate of the default model, each within three standard errors of the
-// difference, so that a change of the physics shows here even when it is a few percent.
+// diffusion, the collision rate and the restitution on the base of the default model, each within
+// three standard errors of the difference, so that a change of the physics shows here even when it
+// is a few percent (a few tenths of a percent for the restitution).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -49,6 +50,7 @@ TEST_CASE("rod A moves and turns as its reference says", "[bench][physics][refer
   REQUIRE(reference.count("v0_mm_s") == 1);
   REQUIRE(reference.count("Dr_rad2_s") == 1);
   REQUIRE(reference.count("events_per_s") == 1);
+  REQUIRE(reference.count("restitution_base") == 1);
   rodsort::bench::AccuracyOptions options;
   options.rods = 12;
   options.seconds = 20.0;
@@ -60,4 +62,6 @@ TEST_CASE("rod A moves and turns as its reference says", "[bench][physics][refer
                 reference.at("Dr_rad2_s"));
   check_against("collisions per s", result.events_per_second, result.events_error,
                 reference.at("events_per_s"));
+  check_against("restitution on the base", result.restitution, result.restitution_error,
+                reference.at("restitution_base"));
 }
