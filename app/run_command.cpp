@@ -31,6 +31,9 @@ Command add_run_command(CLI::App& app) {
                   "Continue the run in DIR from its checkpoint (files are cut back to it)")
       ->check(CLI::ExistingDirectory)
       ->excludes(scenario, output, set, force);
+  run->add_flag("--any-build", options->request.options.any_build,
+                "With --resume: continue a run whose checkpoint another build of rodsort wrote "
+                "(same physics, not bit for bit the same run)");
   run->add_flag("-q,--quiet", options->quiet, "No progress lines");
   run->callback([options] {
     if (options->request.scenario.empty() && options->resume.empty()) {

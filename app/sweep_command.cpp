@@ -20,6 +20,9 @@ Command add_sweep_command(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   sweep->add_flag("--force", request->force,
                   "Rerun points whose run directory holds a different scenario");
+  sweep->add_flag("--any-build", request->any_build,
+                  "Resume points whose checkpoint another build of rodsort wrote (same physics, "
+                  "not bit for bit the same runs)");
   sweep->add_flag("--dry-run", request->dry_run,
                   "Check every point and list what would run; write nothing");
   return {sweep, [request] { return runner::run_sweep(*request, std::cout, std::cerr); }};

@@ -94,7 +94,7 @@ Result run_system(const std::string& name, const Options& options) {
     model.solver_iterations = options.solver_iterations;
     engine::Simulation simulation(std::move(model));
     simulation.advance(warmup_steps);
-    const std::int64_t kicks_before = simulation.counters().kicks;
+    simulation.reset_counters();
     const double cpu_start = process_cpu_seconds();
     const double wall_start = wall_seconds();
     RODSORT_PROFILE_START();
@@ -107,9 +107,10 @@ Result run_system(const std::string& name, const Options& options) {
       result.wall_seconds = wall;
     }
     const double simulated = static_cast<double>(steps) * options.dt;
-    result.kicks_per_rod_second =
-        std::llround(static_cast<double>(simulation.counters().kicks - kicks_before) / simulated /
-                     system.rod_count);
+    result.kicks_per_rod_second = std::llround(static_cast<double>(simulation.counters().kicks) /
+                                               simulated / system.rod_count);
+    result.deepest_overlap_mm =
+        std::max(result.deepest_overlap_mm, simulation.counters().deepest_overlap);
   }
   const double simulated = static_cast<double>(steps) * options.dt;
   result.cpu_per_simulated = result.cpu_seconds / simulated;
@@ -121,26 +122,29 @@ Result run_system(const std::string& name, const Options& options) {
 namespace {
 
 constexpr const char* kTableHeader =
-    "system   rods        dt   steps    CPU [s]  CPU-s/sim-s  us/rod/step  kicks/rod/s  peak [MiB]";
+    "system   rods        dt   steps    CPU [s]  CPU-s/sim-s  us/rod/step  kicks/rod/s  peak [MiB]"
+    "  overlap [mm]";
 
 void write_row(std::ostream& out, const Result& r) {
   char line[160];
-  std::snprintf(line, sizeof line, "%-6s %6d %9.3g %7lld %10.3f %12.3f %12.3f %12lld %11.1f",
+  std::snprintf(line, sizeof line, "%-6s %6d %9.3g %7lld %10.3f %12.3f %12.3f %12lld %11.1f %13.3f",
                 r.system.c_str(), r.rods, r.dt, static_cast<long long>(r.steps), r.cpu_seconds,
                 r.cpu_per_simulated, r.us_per_rod_step,
-                static_cast<long long>(r.kicks_per_rod_second), r.peak_memory_mib);
+                static_cast<long long>(r.kicks_per_rod_second), r.peak_memory_mib,
+                r.deepest_overlap_mm);
   out << line << '\n';
 }
 
 constexpr const char* kCsvHeader =
     "system,rods,dt_s,steps,cpu_s,wall_s,cpu_s_per_simulated_s,us_per_rod_step,"
-    "kicks_per_rod_s,peak_rss_mib";
+    "kicks_per_rod_s,peak_rss_mib,deepest_overlap_mm";
 
 void write_csv_row(std::ostream& out, const Result& r) {
   out << r.system << ',' << r.rods << ',' << format("%.6g", r.dt) << ',' << r.steps << ','
       << format("%.4f", r.cpu_seconds) << ',' << format("%.4f", r.wall_seconds) << ','
       << format("%.4f", r.cpu_per_simulated) << ',' << format("%.4f", r.us_per_rod_step) << ','
-      << r.kicks_per_rod_second << ',' << format("%.1f", r.peak_memory_mib) << '\n';
+      << r.kicks_per_rod_second << ',' << format("%.1f", r.peak_memory_mib) << ','
+      << format("%.4f", r.deepest_overlap_mm) << '\n';
 }
 
 }  // namespace

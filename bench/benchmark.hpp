@@ -39,6 +39,7 @@ struct Result {
   double us_per_rod_step = 0.0;           ///< CPU microseconds per rod per step
   double peak_memory_mib = 0.0;           ///< process high-water mark after the system ran [MiB]
   std::int64_t kicks_per_rod_second = 0;  ///< collision events per rod per simulated second
+  double deepest_overlap_mm = 0.0;        ///< deepest contact over the timed steps [mm]
 };
 
 /// Declares the benchmark's options on a CLI11 app or subcommand (rodsort_bench, `rodsort bench`).

@@ -24,10 +24,13 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "engine/body_tag.hpp"
 #include "engine/collision_kick.hpp"
@@ -120,6 +123,7 @@ struct Simulation::Impl {
   std::vector<RandomStream> kick_streams, noise_streams;
 
   std::vector<double> kick_eps, white_noise_step;  ///< per rod
+  double thinnest_radius = 0.0;  ///< of any rod's spheres: no shallower contact is checked [mm]
   CollisionKick kick;
   SimulationCounters counters;
 
@@ -131,6 +135,12 @@ struct Simulation::Impl {
         cell(model.box_x, model.box_y, 2.0 * largest_rod_reach(model) + kReachMargin) {
     install_material_table_callbacks();
     build_shapes();
+    thinnest_radius = std::numeric_limits<double>::infinity();
+    for (const Species& species : model.species) {
+      for (const Sphere& sphere : species.shape.spheres) {
+        thinnest_radius = std::min(thinnest_radius, sphere.radius);
+      }
+    }
     for (const RodInit& init : model.rods) {
       const Species& species = model.species.at(static_cast<std::size_t>(init.species));
       kick_eps.push_back(species.noise.kick_eps);
@@ -364,8 +374,8 @@ struct Simulation::Impl {
   /// should not happen); stopping says so instead of running on with nonsense.
   [[noreturn]] void stop_escaped_rod(std::size_t rod, const btVector3& where) const {
     std::ostringstream message;
-    message << "rod " << rod << " left the space between base and lid at t = " << time
-            << " s (its centre at x = " << where.x() << ", y = " << where.y()
+    message << "rod " << rod << " left the space between base and lid at step " << step
+            << ", t = " << time << " s (its centre at x = " << where.x() << ", y = " << where.y()
             << ", z = " << where.z() << " mm; base at z = " << drive.base_surface_z(time)
             << " mm, lid at z = " << drive.lid_surface_z(time)
             << " mm): the simulation broke down and was stopped";
@@ -418,6 +428,75 @@ struct Simulation::Impl {
     }
   }
 
+  /// Tracks the deepest contact of the step just solved, and stops the run at a contact deeper
+  /// than the radius of a rod's sphere in it: that sphere's centre has passed the other surface,
+  /// where the contact's normal no longer pushes it out. Bullet refreshed every point's depth when
+  /// the step began.
+  void check_overlaps() {
+    btPersistentManifold* const* manifolds = world->solved_manifolds();
+    const int count = world->solved_manifold_count();
+    double deepest = 0.0;
+    for (int m = 0; m < count; ++m) {
+      const btPersistentManifold& manifold = *manifolds[m];
+      for (int p = 0; p < manifold.getNumContacts(); ++p) {
+        const btManifoldPoint& point = manifold.getContactPoint(p);
+        const double depth = -point.getDistance();
+        deepest = std::max(deepest, depth);
+        if (depth > thinnest_radius) {
+          const double radius = std::min(sphere_radius(*manifold.getBody0(), point.m_index0),
+                                         sphere_radius(*manifold.getBody1(), point.m_index1));
+          if (depth > radius) stop_deep_overlap(manifold, depth, radius);
+        }
+      }
+    }
+    counters.deepest_overlap = std::max(counters.deepest_overlap, deepest);
+  }
+
+  /// The radius of sphere `index` of a rod or image; infinite for a plate or a wall.
+  double sphere_radius(const btCollisionObject& body, int index) const {
+    const auto& tag = *static_cast<const BodyTag*>(body.getUserPointer());
+    if (tag.kind != BodyKind::kRod && tag.kind != BodyKind::kImage) {
+      return std::numeric_limits<double>::infinity();
+    }
+    const RodInit& rod = model.rods[static_cast<std::size_t>(tag.rod)];
+    const auto& spheres = model.species[static_cast<std::size_t>(rod.species)].shape.spheres;
+    return index >= 0 && static_cast<std::size_t>(index) < spheres.size()
+               ? spheres[static_cast<std::size_t>(index)].radius
+               : thinnest_radius;
+  }
+
+  static std::string describe_body(const btCollisionObject& body) {
+    const auto& tag = *static_cast<const BodyTag*>(body.getUserPointer());
+    switch (tag.kind) {
+      case BodyKind::kRod:
+        return "rod " + std::to_string(tag.rod);
+      case BodyKind::kImage:
+        return "a periodic image of rod " + std::to_string(tag.rod);
+      case BodyKind::kBase:
+        return "the base";
+      case BodyKind::kLid:
+        return "the lid";
+      case BodyKind::kWall:
+        return "wall " + std::to_string(tag.wall);
+    }
+    return "a body";
+  }
+
+  [[noreturn]] void stop_deep_overlap(const btPersistentManifold& manifold, double depth,
+                                      double radius) const {
+    const btCollisionObject* first = manifold.getBody0();
+    const btCollisionObject* second = manifold.getBody1();
+    if (static_cast<const BodyTag*>(first->getUserPointer())->kind != BodyKind::kRod) {
+      std::swap(first, second);
+    }
+    std::ostringstream message;
+    message << describe_body(*first) << " went " << depth << " mm deep into "
+            << describe_body(*second) << " at step " << step << ", t = " << time
+            << " s, deeper than the radius of the sphere in contact (" << radius
+            << " mm): the simulation broke down and was stopped";
+    throw std::runtime_error(message.str());
+  }
+
   void apply_white_noise() {
     for (std::size_t i = 0; i < rods.size(); ++i) {
       if (white_noise_step[i] == 0.0) continue;
@@ -446,6 +525,7 @@ struct Simulation::Impl {
     world->stepSimulation(model.dt, 0, model.dt);
     // The collision algorithms were created, and took their restored contacts, in this step.
     restored_contacts.clear();
+    check_overlaps();
     counters.kicks += kick.apply(world->solved_manifolds(), world->solved_manifold_count(), rods,
                                  kick_eps, touching, kick_streams);
     apply_white_noise();
@@ -491,6 +571,7 @@ double Simulation::time() const { return impl_->time; }
 std::int64_t Simulation::step_count() const { return impl_->step; }
 const Model& Simulation::model() const { return impl_->model; }
 SimulationCounters Simulation::counters() const { return impl_->counters; }
+void Simulation::reset_counters() { impl_->counters = {}; }
 
 Frame Simulation::frame() const {
   Frame frame;

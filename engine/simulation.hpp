@@ -13,6 +13,10 @@ namespace rodsort::engine {
 /// Counters of what the engine did, for tests and diagnostics.
 struct SimulationCounters {
   std::int64_t kicks = 0;  ///< collision kicks applied (events of a rod hitting base or lid)
+  /// The deepest any rod has gone into a neighbour, a wall or a plate over the steps taken since
+  /// the Simulation was built or its counters reset (contact depths at the start of each step)
+  /// [mm].
+  double deepest_overlap = 0.0;
 };
 
 /// A Bullet world built from a Model, stepped with the Model's fixed dt.
@@ -23,6 +27,10 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
+  /// Takes one step of dt. Throws std::runtime_error, naming the rod, the step and the quantity,
+  /// when the model breaks down: a rod not finite, out of the space between base and lid, or one
+  /// of its spheres deeper in a neighbour, a wall or a plate than its own radius (its centre past
+  /// the other surface). The Simulation must not be stepped on after that.
   void step();
   void advance(std::int64_t steps);
 
@@ -31,6 +39,7 @@ class Simulation {
   const Model& model() const;
   Frame frame() const;
   SimulationCounters counters() const;
+  void reset_counters();
 
   State state() const;
   void restore(const State& state);

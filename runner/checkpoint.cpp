@@ -69,6 +69,10 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
   out << "started_at " << checkpoint.started_at << '\n';
   out << "metrics_replay_offset " << checkpoint.metrics_replay_offset << '\n';
   out << "scenario_fingerprint " << hex(checkpoint.scenario_fingerprint) << '\n';
+  if (checkpoint.build.find('\n') != std::string::npos) {
+    throw std::invalid_argument("write_checkpoint: a build identity holds no line break");
+  }
+  out << "build " << checkpoint.build << '\n';
   out << "state\n";
   engine::write_state(out, checkpoint.state);
   std::string bytes = out.str();
@@ -132,6 +136,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
         checkpoint.metrics_replay_offset = parse_unsigned(value, key);
       } else if (key == "scenario_fingerprint") {
         checkpoint.scenario_fingerprint = parse_hex(value, key);
+      } else if (key == "build") {
+        checkpoint.build = value;
       } else if (key == "started_at") {
         checkpoint.started_at = value;
       } else {

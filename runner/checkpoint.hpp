@@ -5,11 +5,12 @@
 // if the run wrote more frames before it was killed. Written atomically, so a crash while writing
 // one leaves the previous checkpoint.
 //
-// Layout: a text header of "key value" lines opened by "rodsort-checkpoint 2" and closed by a line
+// Layout: a text header of "key value" lines opened by "rodsort-checkpoint 3" and closed by a line
 // "state", followed by engine::write_state's bytes, and a last line "checksum <16 hex digits>", the
 // fingerprint of everything before it: a checkpoint changed or damaged after it was written is
 // refused. The header also records the fingerprint of scenario.resolved.yaml as the run wrote it,
-// so that a resumed run can refuse an edited scenario.
+// so that a resumed run can refuse an edited scenario, and the build of rodsort that wrote it, so
+// that a run is not continued by another build without being asked to.
 
 #include <cstdint>
 #include <filesystem>
@@ -32,6 +33,8 @@ struct Checkpoint {
   std::uint64_t metrics_replay_offset = 0;
   /// engine::fingerprint of scenario.resolved.yaml as the run wrote it.
   std::uint64_t scenario_fingerprint = 0;
+  /// runner::build_identity() of the program that wrote the checkpoint; empty when not recorded.
+  std::string build;
 };
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& checkpoint);

@@ -83,6 +83,20 @@ class RunSession {
           "); a run resumes only with the scenario it started with: restore the file, or start "
           "a new run from the edited scenario");
     }
+    if (checkpoint.build != build_identity()) {
+      const std::string written_by =
+          checkpoint.build.empty() ? "a build that did not record itself" : checkpoint.build;
+      if (!options_.any_build) {
+        throw std::runtime_error(
+            "the checkpoint in " + directory_.string() +
+            " was written by another build of rodsort (" + written_by + ") than this one (" +
+            build_identity() +
+            "); a run continues bit for bit only with the build that started it: resume it with "
+            "that build, or pass --any-build to continue it with this one");
+      }
+      log("rodsort: continuing with this build (%s) a run written by another (%s)\n",
+          build_identity().c_str(), written_by.c_str());
+    }
     open_files();
     for (AppendFile* file : files()) {
       const std::string name = file->path().filename().string();
@@ -157,7 +171,7 @@ class RunSession {
     if (options_.show_progress && options_.log != nullptr) progress.emplace(options_.log, terminal);
     bool stop_announced = false;
     while (simulation_.step_count() < schedule_.total_steps) {
-      simulation_.step();
+      step_or_explain();
       const std::int64_t step = simulation_.step_count();
       handle_events(step);
       if (options_.after_step) options_.after_step(step);
@@ -188,6 +202,21 @@ class RunSession {
           summary.plateau_mean(), summary.eta_spread, (directory_ / kMetricsCsvFile).c_str());
     }
     return kExitOk;
+  }
+
+  /// A step; when the model breaks down (engine::Simulation::step), the error says what of the
+  /// run is left to look at.
+  void step_or_explain() {
+    try {
+      simulation_.step();
+    } catch (const std::runtime_error& error) {
+      char where[160];
+      std::snprintf(where, sizeof where, "; the last checkpoint, at t = %g s, is kept",
+                    plan_.model.dt * static_cast<double>(last_checkpoint_step_));
+      throw std::runtime_error(std::string(error.what()) + where + ", and " + kRodsCsvFile +
+                               " holds the frames before the breakdown (rodsort render " +
+                               directory_.string() + ")");
+    }
   }
 
   int stop_on_signal(int signal_number, std::optional<ProgressReporter>& progress) {
@@ -299,6 +328,7 @@ class RunSession {
     checkpoint.sessions = sessions_;
     checkpoint.started_at = started_at_;
     checkpoint.scenario_fingerprint = engine::fingerprint(plan_.resolved_yaml);
+    checkpoint.build = build_identity();
     checkpoint.metrics_replay_offset =
         recent_frames_.empty() ? rods_->size() : recent_frames_.front().offset;
     write_checkpoint(directory_ / kCheckpointFile, checkpoint);

@@ -39,6 +39,9 @@ struct RunOptions {
   /// Called after every step once that step's outputs are written; tests use it to raise a signal
   /// or throw at a chosen step.
   std::function<void(std::int64_t step)> after_step;
+  /// Resume a checkpoint written by another build of rodsort (runner::build_identity). The run then
+  /// goes on with the same physics but not bit for bit as it would have with its own build.
+  bool any_build = false;
 };
 
 /// Runs `plan` from the start into `directory`, which must not hold a run (the caller checks and

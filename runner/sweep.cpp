@@ -67,9 +67,13 @@ PointAction decide(const std::filesystem::path& run_directory, const std::string
 std::vector<std::string> point_command(const std::filesystem::path& executable,
                                        const std::filesystem::path& scenario_file,
                                        const std::filesystem::path& run_directory,
-                                       PointAction action) {
+                                       PointAction action, bool any_build) {
   const std::string program = executable.string();
-  if (action == PointAction::kResume) return {program, "run", "--resume", run_directory.string()};
+  if (action == PointAction::kResume) {
+    std::vector<std::string> argv = {program, "run", "--resume", run_directory.string()};
+    if (any_build) argv.push_back("--any-build");
+    return argv;
+  }
   std::vector<std::string> argv = {program, "run", scenario_file.string(), "-o",
                                    run_directory.string()};
   if (action == PointAction::kRestart) argv.push_back("--force");
@@ -255,7 +259,8 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     if (point.action != PointAction::kResume) {
       write_file_atomically(scenario_file, point.resolved_yaml);
     }
-    jobs.push_back({point_command(executable, scenario_file, directory / point.name, point.action),
+    jobs.push_back({point_command(executable, scenario_file, directory / point.name, point.action,
+                                  request.any_build),
                     directory / kLogsDirectory / (point.name + ".log")});
     job_point.push_back(p);
   }

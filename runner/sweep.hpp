@@ -25,6 +25,7 @@ struct SweepRequest {
   int jobs = 0;                  ///< points run at once; 0: one per core
   bool force = false;            ///< rerun points whose run holds a different scenario
   bool dry_run = false;          ///< check and list the points, run nothing, write nothing
+  bool any_build = false;  ///< resume points whose checkpoint another build wrote (RunOptions)
   /// The rodsort program the points run with; empty: this process's own executable.
   std::filesystem::path executable;
   std::FILE* log = stderr;  ///< progress lines; nullptr: none

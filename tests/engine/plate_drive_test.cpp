@@ -35,9 +35,10 @@ TEST_CASE("the solver sees the exact plate velocity: one internal step per step"
   }
 }
 
-TEST_CASE("a rod thrown out between base and lid stops the run with a message", "[plates]") {
+TEST_CASE("plates that pass through a rod stop the run with a message", "[plates]") {
   // Plates that move 2 mm a step (validation refuses this: a tenth of a millimetre is the bound)
-  // pass through the rod; the run must stop rather than go on with a rod outside the cell.
+  // run into the rod deeper than its spheres' radii; the run must stop rather than go on with a
+  // rod inside a plate.
   Model model = testing::single_rod_model(testing::rod_species(preset_a_profile()));
   model.drive.amplitude = 2.0 / (2.0 * M_PI * model.drive.frequency * model.dt);
   Simulation sim(model);
@@ -46,7 +47,26 @@ TEST_CASE("a rod thrown out between base and lid stops the run with a message", 
     sim.advance(2000);
   } catch (const std::runtime_error& error) {
     stopped = true;
-    CHECK_THAT(error.what(), Catch::Contains("rod 0 left the space between base and lid"));
+    CHECK_THAT(error.what(),
+               Catch::Contains("rod 0 went") &&
+                   (Catch::Contains("deep into the lid") || Catch::Contains("deep into the base")));
+  }
+  CHECK(stopped);
+}
+
+TEST_CASE("a rod outside the space between base and lid stops the run with a message", "[plates]") {
+  Model model = testing::single_rod_model(testing::rod_species(preset_a_profile()));
+  Simulation sim(model);
+  State state = sim.state();
+  state.rods[0].position[2] = sim.lid_surface_z() + 1.5 * model.drive.gap;
+  sim.restore(state);
+  bool stopped = false;
+  try {
+    sim.advance(10);
+  } catch (const std::runtime_error& error) {
+    stopped = true;
+    CHECK_THAT(error.what(),
+               Catch::Contains("rod 0 left the space between base and lid at step 0, t = 0 s"));
   }
   CHECK(stopped);
 }

@@ -9,11 +9,13 @@
 
 #include "metrics/rods_csv.hpp"
 #include "runner/atomic_file.hpp"
+#include "runner/checkpoint.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_command.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
+#include "runner/version.hpp"
 #include "scenarios/scenario.hpp"
 #include "support/temp_directory.hpp"
 
@@ -287,6 +289,38 @@ TEST_CASE("an edited resolved scenario is refused on resume, not run", "[runner]
   CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err),
                     Catch::Contains("has changed since the run wrote it"));
   CHECK(read_file(crashed / kRodsCsvFile) == rods_before);
+}
+
+TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runner][run][resume]") {
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "whole") == kExitOk);
+  const auto crashed = directory / "crashed";
+  RunOptions crash = silent();
+  crash.after_step = [](std::int64_t step) {
+    if (step == 2000) throw std::runtime_error("simulated crash");
+  };
+  CHECK_THROWS(run_tiny(crashed, crash));
+  Checkpoint checkpoint = read_checkpoint(crashed / kCheckpointFile);
+  CHECK(checkpoint.build == build_identity());
+  CHECK_THAT(checkpoint.build, Catch::Contains("rodsort ") && Catch::Contains(", executable "));
+  checkpoint.build = "rodsort 0.0.1, another build";
+  write_checkpoint(crashed / kCheckpointFile, checkpoint);
+  const std::string rods_before = read_file(crashed / kRodsCsvFile);
+
+  std::ostringstream err;
+  CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err),
+                    Catch::Contains("written by another build of rodsort (rodsort 0.0.1, another "
+                                    "build) than this one (" +
+                                    build_identity() + ")") &&
+                        Catch::Contains("--any-build"));
+  CHECK(read_file(crashed / kRodsCsvFile) == rods_before);
+
+  // Asked to, it continues; with the same physics in this test the files come out the same.
+  RunOptions any_build = silent();
+  any_build.any_build = true;
+  REQUIRE(resume_run_directory(crashed, any_build, err) == kExitOk);
+  check_same_outputs(directory / "whole", crashed);
+  CHECK(read_checkpoint(crashed / kCheckpointFile).build == build_identity());
 }
 
 TEST_CASE("resuming a directory without a run leaves it as it was", "[runner][run][resume]") {
