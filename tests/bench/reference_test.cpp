@@ -1,13 +1,13 @@
-// Rod A's single-rod figures against their reference (tests/golden/single-rod.csv, made by
+// Rod A's single-rod figures against their reference (tests/golden/reference.yaml, made by
 // scripts/single-rod-reference from rods the test does not use): the speed, the rotational
 // diffusion, the collision rate and the restitution on the base of the default model, each within
 // three standard errors of the difference, so that a change of the physics shows here even when it
 // is a few percent (a few tenths of a percent for the restitution).
+#include <yaml-cpp/yaml.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 
 #include "bench/accuracy.hpp"
@@ -20,17 +20,13 @@ struct Reference {
 };
 
 std::map<std::string, Reference> read_reference() {
-  std::ifstream in(RODSORT_SOURCE_DIR "/tests/golden/single-rod.csv");
-  REQUIRE(in);
+  const YAML::Node section =
+      YAML::LoadFile(RODSORT_SOURCE_DIR "/tests/golden/reference.yaml")["single_rod"];
+  REQUIRE(section.IsMap());
   std::map<std::string, Reference> values;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#' || line.rfind("quantity,", 0) == 0) continue;
-    std::istringstream fields(line);
-    std::string name, mean, error;
-    std::getline(fields, name, ',');
-    std::getline(fields, mean, ',');
-    std::getline(fields, error, ',');
-    values[name] = {std::stod(mean), std::stod(error)};
+  for (const auto& entry : section) {
+    values[entry.first.as<std::string>()] = {entry.second["mean"].as<double>(),
+                                             entry.second["standard_error"].as<double>()};
   }
   return values;
 }

@@ -1,8 +1,8 @@
 // The golden physics test: the whole tool (scenario, engine, trap, metrics, runner) on a small
 // system in which a narrow trap fills and a wide one stays nearly empty, compared with reference
-// values kept in tests/golden/golden.yaml (mean and spread over six seeds, regenerated on purpose
-// only by scripts/golden-reference). A change that moves the physics beyond the seed-to-seed
-// spread fails it; a change that keeps the physics but not the bits does not.
+// values kept in tests/golden/reference.yaml (section trap_filling: mean and spread over six seeds,
+// regenerated on purpose only by scripts/golden-reference). A change that moves the physics beyond
+// the seed-to-seed spread fails it; a change that keeps the physics but not the bits does not.
 
 #include <yaml-cpp/yaml.h>
 
@@ -55,7 +55,8 @@ double late_eta_trap(const TempDirectory& directory, double angle, int seed) {
 }  // namespace
 
 TEST_CASE("golden: a narrow trap fills and a wide one stays nearly empty", "[golden][physics]") {
-  const YAML::Node reference = YAML::LoadFile(kGolden + "golden.yaml");
+  const YAML::Node reference = YAML::LoadFile(kGolden + "reference.yaml")["trap_filling"];
+  REQUIRE(reference.IsMap());
   TempDirectory directory;
   // Where the narrow trap's content levels off differs much from seed to seed (0.28 to 0.88 over
   // six: in this small cell the rods outside can flock, all heading one way, and stop feeding the
