@@ -123,7 +123,10 @@ struct Simulation::Impl {
   std::vector<RandomStream> kick_streams, noise_streams;
 
   std::vector<double> kick_eps, white_noise_step;  ///< per rod
-  double thinnest_radius = 0.0;  ///< of any rod's spheres: no shallower contact is checked [mm]
+  double thinnest_radius = 0.0;                    ///< of any rod's spheres [mm]
+  /// No contact shallower than this can be too deep: the thinnest radius and the thinnest
+  /// sphere's, wall's or plate's reach [mm].
+  double shallowest_limit = 0.0;
   CollisionKick kick;
   SimulationCounters counters;
 
@@ -141,6 +144,11 @@ struct Simulation::Impl {
         thinnest_radius = std::min(thinnest_radius, sphere.radius);
       }
     }
+    double thinnest_other = std::min(thinnest_radius, PlateDrive::kPlateHalfThickness);
+    for (const Wall& wall : model.walls) {
+      thinnest_other = std::min(thinnest_other, wall.half_thickness);
+    }
+    shallowest_limit = thinnest_radius + thinnest_other;
     for (const RodInit& init : model.rods) {
       const Species& species = model.species.at(static_cast<std::size_t>(init.species));
       kick_eps.push_back(species.noise.kick_eps);
@@ -428,10 +436,11 @@ struct Simulation::Impl {
     }
   }
 
-  /// Tracks the deepest contact of the step just solved, and stops the run at a contact deeper
-  /// than the radius of a rod's sphere in it: that sphere's centre has passed the other surface,
-  /// where the contact's normal no longer pushes it out. Bullet refreshed every point's depth when
-  /// the step began.
+  /// Tracks the deepest contact of the step just solved, and stops the run at a contact as deep as
+  /// the two bodies' reach there: a rod's sphere radius, a wall's or a plate's half-thickness. That
+  /// deep, the centres of two spheres meet, or a sphere's centre reaches a box's mid-plane, and
+  /// the contact can no longer push the bodies apart: beyond, it pushes them through each other.
+  /// Bullet refreshed every point's depth when the step began.
   void check_overlaps() {
     btPersistentManifold* const* manifolds = world->solved_manifolds();
     const int count = world->solved_manifold_count();
@@ -442,27 +451,36 @@ struct Simulation::Impl {
         const btManifoldPoint& point = manifold.getContactPoint(p);
         const double depth = -point.getDistance();
         deepest = std::max(deepest, depth);
-        if (depth > thinnest_radius) {
-          const double radius = std::min(sphere_radius(*manifold.getBody0(), point.m_index0),
-                                         sphere_radius(*manifold.getBody1(), point.m_index1));
-          if (depth > radius) stop_deep_overlap(manifold, depth, radius);
+        if (depth >= shallowest_limit) {
+          const double limit = reach(*manifold.getBody0(), point.m_index0) +
+                               reach(*manifold.getBody1(), point.m_index1);
+          if (depth >= limit) stop_deep_overlap(manifold, depth, limit);
         }
       }
     }
     counters.deepest_overlap = std::max(counters.deepest_overlap, deepest);
   }
 
-  /// The radius of sphere `index` of a rod or image; infinite for a plate or a wall.
-  double sphere_radius(const btCollisionObject& body, int index) const {
+  /// How deep another body may reach into `body` at its part `index` before the contact turns
+  /// over: the radius of a rod's sphere, the half-thickness of a wall or a plate.
+  double reach(const btCollisionObject& body, int index) const {
     const auto& tag = *static_cast<const BodyTag*>(body.getUserPointer());
-    if (tag.kind != BodyKind::kRod && tag.kind != BodyKind::kImage) {
-      return std::numeric_limits<double>::infinity();
+    switch (tag.kind) {
+      case BodyKind::kRod:
+      case BodyKind::kImage: {
+        const RodInit& rod = model.rods[static_cast<std::size_t>(tag.rod)];
+        const auto& spheres = model.species[static_cast<std::size_t>(rod.species)].shape.spheres;
+        return index >= 0 && static_cast<std::size_t>(index) < spheres.size()
+                   ? spheres[static_cast<std::size_t>(index)].radius
+                   : thinnest_radius;
+      }
+      case BodyKind::kWall:
+        return model.walls[static_cast<std::size_t>(tag.wall)].half_thickness;
+      case BodyKind::kBase:
+      case BodyKind::kLid:
+        return PlateDrive::kPlateHalfThickness;
     }
-    const RodInit& rod = model.rods[static_cast<std::size_t>(tag.rod)];
-    const auto& spheres = model.species[static_cast<std::size_t>(rod.species)].shape.spheres;
-    return index >= 0 && static_cast<std::size_t>(index) < spheres.size()
-               ? spheres[static_cast<std::size_t>(index)].radius
-               : thinnest_radius;
+    return 0.0;
   }
 
   static std::string describe_body(const btCollisionObject& body) {
@@ -483,7 +501,7 @@ struct Simulation::Impl {
   }
 
   [[noreturn]] void stop_deep_overlap(const btPersistentManifold& manifold, double depth,
-                                      double radius) const {
+                                      double limit) const {
     const btCollisionObject* first = manifold.getBody0();
     const btCollisionObject* second = manifold.getBody1();
     if (static_cast<const BodyTag*>(first->getUserPointer())->kind != BodyKind::kRod) {
@@ -492,8 +510,10 @@ struct Simulation::Impl {
     std::ostringstream message;
     message << describe_body(*first) << " went " << depth << " mm deep into "
             << describe_body(*second) << " at step " << step << ", t = " << time
-            << " s, deeper than the radius of the sphere in contact (" << radius
-            << " mm): the simulation broke down and was stopped";
+            << " s, as deep as the two bodies' reach there (" << limit
+            << " mm: two spheres' radii, or a sphere's radius and a wall's or plate's "
+               "half-thickness), where the contact no longer pushes them apart: the simulation "
+               "broke down and was stopped";
     throw std::runtime_error(message.str());
   }
 

@@ -28,9 +28,11 @@ class Simulation {
   Simulation& operator=(const Simulation&) = delete;
 
   /// Takes one step of dt. Throws std::runtime_error, naming the rod, the step and the quantity,
-  /// when the model breaks down: a rod not finite, out of the space between base and lid, or one
-  /// of its spheres deeper in a neighbour, a wall or a plate than its own radius (its centre past
-  /// the other surface). The Simulation must not be stepped on after that.
+  /// when the model breaks down: a rod not finite, out of the space between base and lid, or a
+  /// contact as deep as the two bodies' reach there (the sum of two spheres' radii, or a sphere's
+  /// radius and a wall's or plate's half-thickness: that deep the contact no longer pushes them
+  /// apart). The Simulation must not be stepped on after that. Shallower overlaps are only
+  /// recorded (SimulationCounters::deepest_overlap).
   void step();
   void advance(std::int64_t steps);
 

@@ -192,9 +192,10 @@ class RunSession {
     write_record(RunStatus::kComplete, "");
     if (progress) progress->finish(sample());
     const double simulated_s = simulation_.time() - session_start_sim_s_;
-    log("rodsort: complete: %s in %s, %.3g CPU-s per simulated s\n", directory_.c_str(),
-        format_duration(total_wall_s()).c_str(),
-        simulated_s > 0.0 ? (process_cpu_seconds() - session_cpu0_s_) / simulated_s : 0.0);
+    log("rodsort: complete: %s in %s, %.3g CPU-s per simulated s; deepest contact %.3g mm\n",
+        directory_.c_str(), format_duration(total_wall_s()).c_str(),
+        simulated_s > 0.0 ? (process_cpu_seconds() - session_cpu0_s_) / simulated_s : 0.0,
+        simulation_.counters().deepest_overlap);
     if (plan_.metrics.trap_area > 0.0) {
       const RunSummary summary = summarize_run(directory_);
       log("rodsort: trapping efficiency eta, mean over the last half: %.3g (spread %.2g); every "
