@@ -35,6 +35,7 @@ engine::Model single_rod(double dt, const AccuracyOptions& options, std::uint64_
   model.solver_iterations = options.solver_iterations;
   model.reverse_contact_order = options.reverse_contact_order;
   model.fixed_sweep_order = options.fixed_sweep_order;
+  model.full_turn_correction = options.full_turn_correction;
   model.box_x = model.box_y = 30.0;
   model.drive = engine::Drive::paper();
   model.dt = dt;
@@ -108,6 +109,9 @@ void add_accuracy_options(CLI::App& app, AccuracyOptions& options, bool& selecte
   app.add_flag("--fixed-sweep-order", options.fixed_sweep_order,
                "in --accuracy, every solver sweep meets the contacts in the canonical order "
                "instead of a random one");
+  app.add_flag("--full-turn-correction", options.full_turn_correction,
+               "in --accuracy, the turns of the solver's position correction are applied in full "
+               "(scenario key run.turn_correction: full)");
 }
 
 double drop_restitution(double dt, const AccuracyOptions& options, std::uint64_t seed) {

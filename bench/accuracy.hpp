@@ -33,6 +33,7 @@ struct AccuracyOptions {
   int solver_iterations = 10;  ///< engine::Model::solver_iterations
   bool reverse_contact_order = false;  ///< engine::Model::reverse_contact_order
   bool fixed_sweep_order = false;      ///< engine::Model::fixed_sweep_order
+  bool full_turn_correction = false;   ///< engine::Model::full_turn_correction
   std::uint64_t seed = 1;
   bool csv = false;
 };

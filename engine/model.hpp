@@ -64,6 +64,10 @@ struct Model {
   double dt = 1.0e-4;  ///< time step [s]
   std::uint64_t seed = 1;
   int solver_iterations = 10;
+  /// Apply the turn velocities of Bullet's position correction (split impulse) in full instead of
+  /// a tenth (Bullet's default), and turn the white noise through it so that contacts resist it
+  /// (docs/model.md, "Checks while a run goes"). Off by default: see there why.
+  bool full_turn_correction = false;
   /// A diagnostic for tests and the benchmark: the solver meets each rod's contacts in the reverse
   /// of the canonical order (solver_batches.cpp); results must agree within their errors.
   bool reverse_contact_order = false;

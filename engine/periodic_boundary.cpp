@@ -29,6 +29,16 @@
 // contacts in a random order, drawn from a stream seeded by the scenario's seed and the step
 // (StreamPurpose::kSolverOrder), so that the order carries no direction and a restored world draws
 // the same orders; both end-to-end orders then give the same D_r and v0 within their errors.
+//
+// White noise. The white angular noise turns a rod by a random angle every step. Turned outside
+// the solver, a rod held against a neighbour is turned into it, and in a pile the solver does not
+// get it out before the next turn: thin ends went 0.24 mm into neighbours at D_r = 0.2 rad^2/s
+// (docs/model.md, "Checks while a run goes"). With Model::full_turn_correction the turn is handed
+// to the solver as a turn velocity of the rod's position correction (split impulse), which is then
+// applied in full: the solver's position rows see
+// it and push back where it would drive the rod into a body it already overlaps, and it moves the
+// rod without giving it angular momentum. A free rod turns by exactly the angle drawn. A rod
+// without any contact is turned by the caller, after the step, as before.
 #include "engine/periodic_boundary.hpp"
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
@@ -36,6 +46,7 @@
 #include <cmath>
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "engine/body_tag.hpp"
 
@@ -103,6 +114,34 @@ void PeriodicContactSolver::convertContacts(btPersistentManifold** manifolds, in
 }
 
 void PeriodicContactSolver::start_step(const RandomStream& stream) { sweep_stream_ = stream; }
+
+btScalar PeriodicContactSolver::solveGroupCacheFriendlySetup(
+    btCollisionObject** bodies, int body_count, btPersistentManifold** manifolds,
+    int manifold_count, btTypedConstraint** constraints, int constraint_count,
+    const btContactSolverInfo& info, btIDebugDraw* debug) {
+  const btScalar result = btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
+      bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, debug);
+  if (noise_rates_ == nullptr) return result;
+  // Only rods with a contact are turned here, so that which rods the solver turns does not depend
+  // on how the islands are grouped into batches (a batch without contacts is not set up).
+  for (int m = 0; m < manifold_count; ++m) {
+    if (manifolds[m]->getNumContacts() == 0) continue;
+    for (const btCollisionObject* body : {manifolds[m]->getBody0(), manifolds[m]->getBody1()}) {
+      const auto& tag = *static_cast<const BodyTag*>(body->getUserPointer());
+      if (tag.kind != BodyKind::kRod && tag.kind != BodyKind::kImage) continue;
+      const auto rod = static_cast<std::size_t>(tag.rod);
+      const double rate = (*noise_rates_)[rod];
+      if (rate == 0.0 || (*noise_turned_)[rod]) continue;
+      const int solver_body = rods_[rod]->getCompanionId();
+      if (solver_body < 0) continue;
+      // Bullet applies a turn velocity scaled by m_splitImpulseTurnErp, which the engine sets to
+      // 1.
+      m_tmpSolverBodyPool[solver_body].m_turnVelocity += btVector3(0, 0, rate);
+      (*noise_turned_)[rod] = 1;
+    }
+  }
+  return result;
+}
 
 btScalar PeriodicContactSolver::solveSingleIteration(
     int iteration, btCollisionObject** bodies, int body_count, btPersistentManifold** manifolds,

@@ -62,8 +62,21 @@ class PeriodicContactSolver : public btSequentialImpulseConstraintSolver {
   void start_step(const RandomStream& stream);
   /// engine::Model::fixed_sweep_order.
   void set_fixed_sweep_order(bool fixed) { fixed_sweep_order_ = fixed; }
+  /// The white noise's turn of each rod in the coming step, as a rate about the vertical
+  /// [rad/s], given to the solver as part of its position correction (periodic_boundary.cpp,
+  /// "White noise"); `turned` gets 1 for each rod the solver took it for, which the caller
+  /// clears before the step. Both live as long as the solver.
+  void set_noise_turns(const std::vector<double>* rates, std::vector<char>* turned) {
+    noise_rates_ = rates;
+    noise_turned_ = turned;
+  }
 
  protected:
+  btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int body_count,
+                                        btPersistentManifold** manifolds, int manifold_count,
+                                        btTypedConstraint** constraints, int constraint_count,
+                                        const btContactSolverInfo& info,
+                                        btIDebugDraw* debug) override;
   void convertContacts(btPersistentManifold** manifolds, int manifold_count,
                        const btContactSolverInfo& info) override;
   btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int body_count,
@@ -77,6 +90,8 @@ class PeriodicContactSolver : public btSequentialImpulseConstraintSolver {
   std::deque<btPersistentManifold> translated_;  ///< live until the next step's conversion
   RandomStream sweep_stream_{0, 0, StreamPurpose::kSolverOrder};
   bool fixed_sweep_order_ = false;
+  const std::vector<double>* noise_rates_ = nullptr;
+  std::vector<char>* noise_turned_ = nullptr;
 };
 
 }  // namespace rodsort::engine

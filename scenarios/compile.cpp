@@ -268,6 +268,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   model.seed = static_cast<std::uint64_t>(spec.seed.value);
   model.dt = spec.dt.value;
   model.solver_iterations = static_cast<int>(spec.solver_iterations.value);
+  model.full_turn_correction = spec.turn_correction.value == "full";
 
   model.drive.frequency = spec.frequency.value;
   model.drive.gap = spec.gap.value;

@@ -222,6 +222,7 @@ std::string resolved_yaml(const Scenario& scenario) {
   w.key("duration").number(spec.duration.value);
   w.key("dt").number(spec.dt.value);
   w.key("solver_iterations").whole(spec.solver_iterations.value);
+  w.key("turn_correction").word(spec.turn_correction.value);
   w.end_map();
 
   w.key("output").begin_map();

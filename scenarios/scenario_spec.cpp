@@ -260,6 +260,7 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
   spec.duration = run.real("duration");
   spec.dt = run.real("dt");
   spec.solver_iterations = run.integer("solver_iterations");
+  spec.turn_correction = run.choice("turn_correction");
 
   SectionReader output = top.section("output");
   spec.frame_interval = output.real("frame_interval");

@@ -162,6 +162,12 @@ std::vector<KeyInfo> scenario_keys() {
       {"run.solver_iterations", V::integer, "", "10", closed(1, 1000), {},
        "Iterations of Bullet's contact solver per step; the rods' speed and D_r depend on it "
        "by 10-20% (docs/performance.md, section 4)."},
+      {"run.turn_correction", V::choice, "", "tenth", {}, {"tenth", "full"},
+       "How much of the turns of Bullet's position correction (split impulse) is applied: "
+       "`tenth`, Bullet's default, the white noise turning rods after each step; `full`, all, "
+       "the white noise turned through the correction so that contacts resist it. `full` halves "
+       "the white noise's overlaps and makes rod A's v0 depend less on dt, but changes the RnT "
+       "rod's gait at the default dt (docs/model.md, \"Checks while a run goes\")."},
 
       {"output", V::section, "", "", {}, {}, "What the run writes, and how often."},
       {"output.frame_interval", V::real, "s", "0.07", positive(), {},

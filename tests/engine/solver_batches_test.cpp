@@ -44,6 +44,13 @@ TEST_CASE("solving batch by batch equals one solve of every contact", "[solver]"
   constexpr int kSteps = 1500;
   CHECK(hash_after(batched, kSteps) == hash_after(single, kSteps));
 
+  // And with the white noise turned through the solver's position correction.
+  Model full = batched;
+  full.full_turn_correction = true;
+  Model full_single = single;
+  full_single.full_turn_correction = true;
+  CHECK(hash_after(full, kSteps) == hash_after(full_single, kSteps));
+
   // The comparison can fail: another order of the contacts gives another state.
   Model reversed = batched;
   reversed.reverse_contact_order = true;
