@@ -16,7 +16,9 @@ Command add_sweep_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   sweep->add_option("-o,--output", request->output, "Sweep directory (default: runs/<sweep name>)");
-  sweep->add_option("-j,--jobs", request->jobs, "Points run at once (default: one per core)")
+  sweep
+      ->add_option("-j,--jobs", request->jobs,
+                   "Points run at once (default: one per processor this process may use)")
       ->check(CLI::Range(1, 1024));
   sweep->add_flag("--force", request->force,
                   "Rerun points whose run directory holds a different scenario");

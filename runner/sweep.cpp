@@ -5,7 +5,6 @@
 #include <csignal>
 #include <cstring>
 #include <ostream>
-#include <thread>
 
 #include "runner/atomic_file.hpp"
 #include "runner/cost_estimate.hpp"
@@ -20,6 +19,7 @@
 #include "runner/run_directory.hpp"
 #include "runner/run_record.hpp"
 #include "runner/run_summary.hpp"
+#include "runner/usable_cpus.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/sweep.hpp"
 
@@ -129,11 +129,6 @@ void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& poi
   } else {
     out << "nothing to run\n";
   }
-}
-
-int default_jobs() {
-  const unsigned cores = std::thread::hardware_concurrency();
-  return cores == 0 ? 1 : static_cast<int>(cores);
 }
 
 }  // namespace
@@ -265,7 +260,7 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     job_point.push_back(p);
   }
   const int parallel =
-      std::max(1, std::min(request.jobs > 0 ? request.jobs : default_jobs(),
+      std::max(1, std::min(request.jobs > 0 ? request.jobs : usable_cpus(),
                            static_cast<int>(std::max<std::size_t>(jobs.size(), 1))));
   const auto log = [&request](const std::string& line) {
     if (request.log == nullptr) return;

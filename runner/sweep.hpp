@@ -22,7 +22,7 @@ namespace rodsort::runner {
 struct SweepRequest {
   std::filesystem::path sweep_file;
   std::filesystem::path output;  ///< the sweep directory; empty: runs/<sweep name>
-  int jobs = 0;                  ///< points run at once; 0: one per core
+  int jobs = 0;                  ///< points run at once; 0: runner::usable_cpus()
   bool force = false;            ///< rerun points whose run holds a different scenario
   bool dry_run = false;          ///< check and list the points, run nothing, write nothing
   bool any_build = false;  ///< resume points whose checkpoint another build wrote (RunOptions)
