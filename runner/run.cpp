@@ -75,7 +75,9 @@ class RunSession {
   int resume() {
     const Checkpoint checkpoint = read_checkpoint(directory_ / kCheckpointFile);
     const std::filesystem::path resolved = directory_ / kResolvedScenarioFile;
-    if (engine::fingerprint(read_file(resolved)) != checkpoint.scenario_fingerprint) {
+    const bool extended = options_.extended_from_fingerprint &&
+                          *options_.extended_from_fingerprint == checkpoint.scenario_fingerprint;
+    if (!extended && engine::fingerprint(read_file(resolved)) != checkpoint.scenario_fingerprint) {
       throw std::runtime_error(
           resolved.string() +
           " has changed since the run wrote it (its fingerprint differs from the one in " +

@@ -27,6 +27,7 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 
 #include "runner/run_plan.hpp"
 
@@ -42,6 +43,10 @@ struct RunOptions {
   /// Resume a checkpoint written by another build of rodsort (runner::build_identity). The run then
   /// goes on with the same physics but not bit for bit as it would have with its own build.
   bool any_build = false;
+  /// When set, the checkpoint may carry this scenario fingerprint instead of that of the run's
+  /// scenario.resolved.yaml: the caller rewrote the file to extend the run
+  /// (resume_run_directory with a duration) after checking the checkpoint against the old one.
+  std::optional<std::uint64_t> extended_from_fingerprint;
 };
 
 /// Runs `plan` from the start into `directory`, which must not hold a run (the caller checks and

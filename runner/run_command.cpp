@@ -1,7 +1,11 @@
 #include "runner/run_command.hpp"
 
+#include <cstdio>
 #include <ostream>
 
+#include "engine/fingerprint.hpp"
+#include "runner/atomic_file.hpp"
+#include "runner/checkpoint.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/file_kind.hpp"
 #include "runner/run_directory.hpp"
@@ -76,7 +80,7 @@ int run_scenario_file(const RunRequest& request, std::ostream& err) {
 }
 
 int resume_run_directory(const std::filesystem::path& directory, const RunOptions& options,
-                         std::ostream& err) {
+                         std::ostream& err, std::optional<double> duration) {
   if (!std::filesystem::is_directory(directory)) {
     err << "rodsort: " << directory.string() << " holds no run to resume (no such directory)\n";
     return kExitUsage;
@@ -103,9 +107,9 @@ int resume_run_directory(const std::filesystem::path& directory, const RunOption
         << " holds no run to resume (no run.json and checkpoint.bin)\n";
     return kExitUsage;
   }
-  if (record->status == RunStatus::kComplete) {
+  if (record->status == RunStatus::kComplete && !duration) {
     err << "rodsort: " << directory.string() << " is already complete (t = " << record->simulated_s
-        << " s); nothing to do\n";
+        << " s); nothing to do (--duration T continues it to a later time)\n";
     return kExitOk;
   }
   const std::filesystem::path resolved = directory / kResolvedScenarioFile;
@@ -115,7 +119,35 @@ int resume_run_directory(const std::filesystem::path& directory, const RunOption
     err << "rodsort: cannot resume: " << resolved.string() << " no longer loads\n";
     return kExitFailure;
   }
-  return continue_run(make_run_plan(*loaded.scenario), directory, options);
+  if (!duration) return continue_run(make_run_plan(*loaded.scenario), directory, options);
+
+  // Extending: the same scenario with another run.duration, checked as a new one would be.
+  char value[64];
+  std::snprintf(value, sizeof value, "run.duration=%.17g", *duration);
+  const scenarios::LoadResult longer = scenarios::load_scenario_with_options(resolved, {value});
+  err << scenarios::format_diagnostics(longer.diagnostics);
+  if (!longer.ok()) {
+    err << "rodsort: cannot continue " << directory.string() << " to t = " << *duration
+        << " s; nothing was changed\n";
+    return kExitUsage;
+  }
+  if (*duration < record->simulated_s) {
+    err << "rodsort: " << directory.string() << " has already reached t = " << record->simulated_s
+        << " s, beyond --duration " << *duration << " s; nothing was changed\n";
+    return kExitUsage;
+  }
+  const std::string old_text = read_file(resolved);
+  const Checkpoint checkpoint = read_checkpoint(directory / kCheckpointFile);
+  if (engine::fingerprint(old_text) != checkpoint.scenario_fingerprint) {
+    err << "rodsort: " << resolved.string()
+        << " has changed since the run wrote it; restore it before continuing the run\n";
+    return kExitFailure;
+  }
+  const RunPlan plan = make_run_plan(*longer.scenario);
+  write_file_atomically(resolved, plan.resolved_yaml);
+  RunOptions extended = options;
+  extended.extended_from_fingerprint = checkpoint.scenario_fingerprint;
+  return continue_run(plan, directory, extended);
 }
 
 int validate_scenario_file(const std::filesystem::path& scenario,

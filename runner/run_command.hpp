@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,13 @@ struct RunRequest {
 /// so does an output directory that already holds a run, unless `force`.
 int run_scenario_file(const RunRequest& request, std::ostream& err);
 
-/// Continues the run in `directory` from its checkpoint (a complete run is left as it is).
+/// Continues the run in `directory` from its checkpoint (a complete run is left as it is). With
+/// `duration` [s], the run, complete or not, is continued to that simulated time instead of its
+/// own: scenario.resolved.yaml is rewritten with the new run.duration, nothing else changes, and
+/// the files come out as those of a run started with that duration. A duration the run has
+/// already passed, or one the scenario's checks refuse, is refused (kExitUsage).
 int resume_run_directory(const std::filesystem::path& directory, const RunOptions& options,
-                         std::ostream& err);
+                         std::ostream& err, std::optional<double> duration = std::nullopt);
 
 /// Prints the resolved scenario on `out`, or its errors on `err` (kExitUsage).
 int validate_scenario_file(const std::filesystem::path& scenario,

@@ -323,6 +323,33 @@ TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runne
   CHECK(read_checkpoint(crashed / kCheckpointFile).build == build_identity());
 }
 
+TEST_CASE("a complete run continued to a longer duration equals a run of that duration",
+          "[runner][run][resume]") {
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "whole") == kExitOk);
+  const auto shorter = directory / "shorter";
+  REQUIRE(run_tiny(shorter, silent(), {"run.duration=0.21"}) == kExitOk);
+  REQUIRE(read_run_record(shorter)->status == RunStatus::kComplete);
+
+  std::ostringstream err;
+  // Not before the time it has reached; nothing changes.
+  const std::string resolved_before = read_file(shorter / kResolvedScenarioFile);
+  CHECK(resume_run_directory(shorter, silent(), err, 0.14) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("has already reached t = 0.21 s"));
+  // Nor to a time the scenario's checks refuse.
+  CHECK(resume_run_directory(shorter, silent(), err, 1e9) == kExitUsage);
+  CHECK(read_file(shorter / kResolvedScenarioFile) == resolved_before);
+
+  REQUIRE(resume_run_directory(shorter, silent(), err, 0.35) == kExitOk);
+  INFO(err.str());
+  check_same_outputs(directory / "whole", shorter);
+  const auto record = read_run_record(shorter);
+  CHECK(record->status == RunStatus::kComplete);
+  CHECK(record->duration_s == Approx(0.35));
+  CHECK(record->sessions == 2);
+  CHECK_THAT(read_file(shorter / kResolvedScenarioFile), Catch::Contains("duration: 0.35"));
+}
+
 TEST_CASE("resuming a directory without a run leaves it as it was", "[runner][run][resume]") {
   TempDirectory directory;
   const auto empty = directory / "empty";
