@@ -38,6 +38,16 @@ RunOptions silent() {
   return options;
 }
 
+/// Throws "simulated crash" after step 2000: the last checkpoint is then at step 1050, and frames
+/// up to step 1750 are written.
+RunOptions crash_at_step_2000() {
+  RunOptions options = silent();
+  options.after_step = [](std::int64_t step) {
+    if (step == 2000) throw std::runtime_error("simulated crash");
+  };
+  return options;
+}
+
 int run_tiny(const std::filesystem::path& directory, RunOptions options = silent(),
              std::vector<std::string> set_options = {}) {
   RunRequest request;
@@ -183,10 +193,7 @@ TEST_CASE("a run that died after its checkpoint is cut back and resumed exactly"
 
   // Dies at step 2000: the last checkpoint is at step 1050, but frames up to step 1750 are written.
   const auto crashed = directory / "crashed";
-  RunOptions crash = silent();
-  crash.after_step = [](std::int64_t step) {
-    if (step == 2000) throw std::runtime_error("simulated crash");
-  };
+  const RunOptions crash = crash_at_step_2000();
   CHECK_THROWS_WITH(run_tiny(crashed, crash), "simulated crash");
   const auto record = read_run_record(crashed);
   REQUIRE(record.has_value());
@@ -272,10 +279,7 @@ TEST_CASE("one process at a time runs in a run directory", "[runner][run]") {
 TEST_CASE("an edited resolved scenario is refused on resume, not run", "[runner][run][resume]") {
   TempDirectory directory;
   const auto crashed = directory / "crashed";
-  RunOptions crash = silent();
-  crash.after_step = [](std::int64_t step) {
-    if (step == 2000) throw std::runtime_error("simulated crash");
-  };
+  const RunOptions crash = crash_at_step_2000();
   CHECK_THROWS(run_tiny(crashed, crash));
   // A shorter run, still a valid scenario: resuming it would end early with exit 0.
   const auto resolved = crashed / kResolvedScenarioFile;
@@ -295,10 +299,7 @@ TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runne
   TempDirectory directory;
   REQUIRE(run_tiny(directory / "whole") == kExitOk);
   const auto crashed = directory / "crashed";
-  RunOptions crash = silent();
-  crash.after_step = [](std::int64_t step) {
-    if (step == 2000) throw std::runtime_error("simulated crash");
-  };
+  const RunOptions crash = crash_at_step_2000();
   CHECK_THROWS(run_tiny(crashed, crash));
   Checkpoint checkpoint = read_checkpoint(crashed / kCheckpointFile);
   CHECK(checkpoint.build == build_identity());
@@ -364,10 +365,7 @@ TEST_CASE("a damaged frame read back on resume is named at its line of rods.csv"
           "[runner][run][resume]") {
   TempDirectory directory;
   const auto crashed = directory / "crashed";
-  RunOptions crash = silent();
-  crash.after_step = [](std::int64_t step) {
-    if (step == 2000) throw std::runtime_error("simulated crash");
-  };
+  const RunOptions crash = crash_at_step_2000();
   CHECK_THROWS(run_tiny(crashed, crash));
   // The checkpoint at step 1050 keeps the header and four frames of four rods: lines 1-17. The
   // last of them, read back to refill the metrics' window, gets a word for a number.
