@@ -44,11 +44,8 @@ RodPlateCollision::RodPlateCollision(const btCollisionAlgorithmConstructionInfo&
       rod_is_body0_(rod_is_body0),
       manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr),
       clear_(manifolds_.size(), 0) {
-  for (const SurfaceContactState& saved : restored) {
-    btPersistentManifold*& manifold = manifolds_.at(static_cast<std::size_t>(saved.sphere));
-    manifold = new_manifold(*m_dispatcher, rod->getCollisionObject(), plate->getCollisionObject());
-    load_points(*manifold, saved);
-  }
+  restore_sphere_manifolds(*m_dispatcher, rod->getCollisionObject(), plate->getCollisionObject(),
+                           restored, manifolds_);
 }
 
 RodPlateCollision::~RodPlateCollision() {

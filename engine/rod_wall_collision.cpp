@@ -47,11 +47,8 @@ RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& i
                    wall->getCollisionObject()->getCollisionShape()->getContactBreakingThreshold(
                        kContactBreakingFactor))),
       manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr) {
-  for (const SurfaceContactState& saved : restored) {
-    btPersistentManifold*& manifold = manifolds_.at(static_cast<std::size_t>(saved.sphere));
-    manifold = new_manifold(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject());
-    load_points(*manifold, saved);
-  }
+  restore_sphere_manifolds(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject(),
+                           restored, manifolds_);
 }
 
 RodWallCollision::~RodWallCollision() {

@@ -175,9 +175,6 @@ void check_state(const State& state, std::size_t rod_count, int surface_count,
       }
     }
   }
-  const auto key = [](const SurfaceContactState& c) {
-    return std::array<std::int32_t, 3>{c.rod, c.surface, c.sphere};
-  };
   for (std::size_t k = 0; k < state.contacts.size(); ++k) {
     const SurfaceContactState& contact = state.contacts[k];
     const std::string which = "contact " + std::to_string(k) + " of the state";
@@ -188,7 +185,7 @@ void check_state(const State& state, std::size_t rod_count, int surface_count,
                                   std::to_string(contact.surface) + ", sphere " +
                                   std::to_string(contact.sphere) + " do not exist in the model");
     }
-    if (k > 0 && !(key(state.contacts[k - 1]) < key(contact))) {
+    if (k > 0 && !comes_before(state.contacts[k - 1], contact)) {
       throw std::invalid_argument(which + ": out of order or repeated");
     }
     if (contact.points.empty() || contact.points.size() > kMaxPointsPerManifold) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <iosfwd>
+#include <tuple>
 #include <vector>
 
 namespace rodsort::engine {
@@ -43,6 +44,11 @@ struct SurfaceContactState {
   std::int32_t sphere = 0;
   std::vector<ContactPointState> points;  ///< 1 to 4, in the manifold's order
 };
+
+/// The order of State::contacts: by rod, then surface, then sphere.
+inline bool comes_before(const SurfaceContactState& a, const SurfaceContactState& b) {
+  return std::tie(a.rod, a.surface, a.sphere) < std::tie(b.rod, b.surface, b.sphere);
+}
 
 struct State {
   double time = 0.0;       ///< [s]

@@ -15,7 +15,6 @@
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include <algorithm>
-#include <tuple>
 #include <utility>
 
 #include "engine/body_tag.hpp"
@@ -81,10 +80,6 @@ btManifoldPoint load_point(const ContactPointState& saved) {
   return point;
 }
 
-auto key(const SurfaceContactState& contact) {
-  return std::tie(contact.rod, contact.surface, contact.sphere);
-}
-
 }  // namespace
 
 int surface_of(const BodyTag& tag) {
@@ -120,8 +115,7 @@ std::vector<SurfaceContactState> save_surface_contacts(btDispatcher& dispatcher)
       contact.points.push_back(save_point(manifold.getContactPoint(p)));
     }
   }
-  std::sort(contacts.begin(), contacts.end(),
-            [](const auto& a, const auto& b) { return key(a) < key(b); });
+  std::sort(contacts.begin(), contacts.end(), comes_before);
   return contacts;
 }
 
@@ -167,6 +161,17 @@ void add_sphere_contact(btDispatcher& dispatcher, btPersistentManifold*& manifol
 void load_points(btPersistentManifold& manifold, const SurfaceContactState& saved) {
   // Appended in order: a manifold of at most four points keeps them where they were.
   for (const ContactPointState& point : saved.points) manifold.addManifoldPoint(load_point(point));
+}
+
+void restore_sphere_manifolds(btDispatcher& dispatcher, const btCollisionObject* rod,
+                              const btCollisionObject* surface,
+                              std::span<const SurfaceContactState> restored,
+                              std::vector<btPersistentManifold*>& manifolds) {
+  for (const SurfaceContactState& saved : restored) {
+    btPersistentManifold*& manifold = manifolds.at(static_cast<std::size_t>(saved.sphere));
+    manifold = new_manifold(dispatcher, rod, surface);
+    load_points(*manifold, saved);
+  }
 }
 
 }  // namespace rodsort::engine

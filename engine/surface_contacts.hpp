@@ -46,6 +46,14 @@ class RestoredContacts {
 /// Fills an empty manifold with a saved manifold's points, every field as it was.
 void load_points(btPersistentManifold& manifold, const SurfaceContactState& saved);
 
+/// Remakes the saved manifolds of `rod` with a plate or wall `surface`, each in the slot of its
+/// sphere in `manifolds` (one per sphere, null where none): what a rod-plate or rod-wall algorithm
+/// does when a restored world first creates it.
+void restore_sphere_manifolds(btDispatcher& dispatcher, const btCollisionObject* rod,
+                              const btCollisionObject* surface,
+                              std::span<const SurfaceContactState> restored,
+                              std::vector<btPersistentManifold*>& manifolds);
+
 /// Adds the contact of sphere `sphere` of `rod` with a plate or wall `surface` to the sphere's own
 /// persistent manifold (made on its first contact), refreshed and merged by Bullet's
 /// btManifoldResult as Bullet's compound algorithm does. `normal` on the surface, toward the rod;
