@@ -36,6 +36,8 @@ engine::Model single_rod(double dt, const AccuracyOptions& options, std::uint64_
   model.reverse_contact_order = options.reverse_contact_order;
   model.fixed_sweep_order = options.fixed_sweep_order;
   model.full_turn_correction = options.full_turn_correction;
+  model.exact_contact_solver = options.exact_contact_solver;
+  model.constraint_force_mixing = options.constraint_force_mixing;
   model.box_x = model.box_y = 30.0;
   model.drive = engine::Drive::paper();
   model.dt = dt;
@@ -56,10 +58,11 @@ std::string format(const char* pattern, double value) {
 
 constexpr const char* kTableHeader =
     "      dt   v0 [mm/s]        D_r [rad^2/s]    events/s  1 rod CPU-s/sim-s  319 rods "
-    "CPU-s/sim-s   restitution";
+    "CPU-s/sim-s   restitution   exact fallbacks";
 constexpr const char* kCsvHeader =
     "dt_s,v0_mm_s,v0_sem_mm_s,Dr_rad2_s,Dr_sem_rad2_s,events_per_s,single_cpu_s_per_simulated_s,"
-    "cpu_s_per_simulated_s_319,events_sem_per_s,restitution,restitution_sem";
+    "cpu_s_per_simulated_s_319,events_sem_per_s,restitution,restitution_sem,exact_fallback_"
+    "fraction";
 
 void write_row(std::ostream& out, const AccuracyResult& r, bool csv) {
   if (csv) {
@@ -68,14 +71,17 @@ void write_row(std::ostream& out, const AccuracyResult& r, bool csv) {
         << format("%.4f", r.diffusion_error) << ',' << format("%.1f", r.events_per_second) << ','
         << format("%.5f", r.single_cpu_per_simulated) << ',' << format("%.4f", r.cost_319) << ','
         << format("%.2f", r.events_error) << ',' << format("%.5f", r.restitution) << ','
-        << format("%.5f", r.restitution_error) << '\n';
+        << format("%.5f", r.restitution_error) << ',' << format("%.5f", r.exact_fallback_fraction)
+        << '\n';
     return;
   }
-  char line[200];
-  std::snprintf(line, sizeof line,
-                "%8.3g %6.2f +- %4.2f   %5.3f +- %5.3f %11.0f %18.4f %20.3f   %5.3f +- %5.3f", r.dt,
-                r.speed, r.speed_error, r.diffusion, r.diffusion_error, r.events_per_second,
-                r.single_cpu_per_simulated, r.cost_319, r.restitution, r.restitution_error);
+  char line[220];
+  std::snprintf(
+      line, sizeof line,
+      "%8.3g %6.2f +- %4.2f   %5.3f +- %5.3f %11.0f %18.4f %20.3f   %5.3f +- %5.3f %17.5f", r.dt,
+      r.speed, r.speed_error, r.diffusion, r.diffusion_error, r.events_per_second,
+      r.single_cpu_per_simulated, r.cost_319, r.restitution, r.restitution_error,
+      r.exact_fallback_fraction);
   out << line << '\n';
 }
 
@@ -112,6 +118,14 @@ void add_accuracy_options(CLI::App& app, AccuracyOptions& options, bool& selecte
   app.add_flag("--full-turn-correction", options.full_turn_correction,
                "in --accuracy, the turns of the solver's position correction are applied in full "
                "(scenario key run.turn_correction: full)");
+  app.add_flag("--exact-solver", options.exact_contact_solver,
+               "in --accuracy, solve each step's contacts exactly (Bullet's MLCP solver, Dantzig's "
+               "algorithm) instead of by the solver's sweeps");
+  app.add_option("--cfm", options.constraint_force_mixing,
+                 "in --accuracy, the solvers' constraint force mixing, a compliance of every "
+                 "contact [s/g]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
 }
 
 double drop_restitution(double dt, const AccuracyOptions& options, std::uint64_t seed) {
@@ -167,7 +181,7 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
   const std::int64_t steps_per_frame = std::llround(kFrameInterval / dt);
   const int frame_count = static_cast<int>(std::lround(options.seconds / kFrameInterval)) + 1;
   std::vector<double> speeds, diffusions, event_rates;
-  double events = 0.0, cpu = 0.0, simulated = 0.0;
+  double events = 0.0, cpu = 0.0, simulated = 0.0, fallbacks = 0.0, steps = 0.0;
   for (int rod = 0; rod < options.rods; ++rod) {
     engine::Simulation simulation(
         single_rod(dt, options, options.seed + static_cast<std::uint64_t>(rod)));
@@ -185,6 +199,8 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
     events += static_cast<double>(simulation.counters().kicks - events_before);
     event_rates.push_back(static_cast<double>(simulation.counters().kicks - events_before) /
                           elapsed);
+    fallbacks += static_cast<double>(simulation.counters().exact_solver_fallbacks);
+    steps += static_cast<double>(simulation.step_count());
     speeds.push_back(metrics::mean_axial_speed(frames, {0}, 1));
     diffusions.push_back(metrics::rotational_diffusion(frames, {0}, kMinLag, kMaxLag).coefficient);
   }
@@ -199,6 +215,7 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
   result.events_per_second = events / simulated;
   result.events_error = metrics::sample_statistics(event_rates).standard_error;
   result.single_cpu_per_simulated = cpu / simulated;
+  result.exact_fallback_fraction = fallbacks / steps;
   std::vector<double> restitutions;
   for (int drop = 0; drop < options.rods; ++drop) {
     restitutions.push_back(

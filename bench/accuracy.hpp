@@ -34,6 +34,8 @@ struct AccuracyOptions {
   bool reverse_contact_order = false;  ///< engine::Model::reverse_contact_order
   bool fixed_sweep_order = false;      ///< engine::Model::fixed_sweep_order
   bool full_turn_correction = false;   ///< engine::Model::full_turn_correction
+  bool exact_contact_solver = false;   ///< engine::Model::exact_contact_solver
+  double constraint_force_mixing = 0.0;  ///< engine::Model::constraint_force_mixing [s/g]
   std::uint64_t seed = 1;
   bool csv = false;
 };
@@ -48,6 +50,8 @@ struct AccuracyResult {
   double events_error = 0.0;              ///< standard error over rods [1/s]
   double restitution = 0.0;               ///< rod A on the base, mean over drops
   double restitution_error = 0.0;         ///< standard error over drops
+  /// Steps whose contacts the exact solver left to the sweeps, over all steps of the rods' runs.
+  double exact_fallback_fraction = 0.0;
   double single_cpu_per_simulated = 0.0;  ///< one rod, CPU seconds per simulated second
   double cost_319 = 0.0;  ///< 319-rod system, CPU seconds per simulated second (0: not measured)
 };

@@ -77,6 +77,17 @@ struct Model {
   /// A diagnostic for tests: the solver takes every contact island in one call instead of batch by
   /// batch (solver_batches.cpp); with fixed_sweep_order the results must be bit for bit the same.
   bool single_solver_batch = false;
+  /// A diagnostic for the benchmark: each batch of contacts is solved exactly, as one linear
+  /// complementarity problem with box friction (Bullet's MLCP solver, Dantzig's algorithm), instead
+  /// of by ten sweeps; a problem it cannot solve falls back to the sweeps and is counted
+  /// (SimulationCounters::exact_solver_fallbacks). Its cost grows as the cube of a batch's
+  /// contacts: for lone rods only (docs/model.md, "An exact contact solve").
+  bool exact_contact_solver = false;
+  /// Bullet's constraint force mixing (btContactSolverInfo::m_globalCfm), used by both solvers: a
+  /// compliance of every contact row, added as cfm / dt to the diagonal of the problem, whose
+  /// entries are velocity per impulse [1/g] (rod A: 1/m = 61 per g) [s/g]. Zero, Bullet's
+  /// default, is a rigid contact.
+  double constraint_force_mixing = 0.0;
 };
 
 }  // namespace rodsort::engine

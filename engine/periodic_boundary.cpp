@@ -119,8 +119,13 @@ btScalar PeriodicContactSolver::solveGroupCacheFriendlySetup(
     btCollisionObject** bodies, int body_count, btPersistentManifold** manifolds,
     int manifold_count, btTypedConstraint** constraints, int constraint_count,
     const btContactSolverInfo& info, btIDebugDraw* debug) {
-  const btScalar result = btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
-      bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, debug);
+  const btScalar result =
+      exact_ ? btMLCPSolver::solveGroupCacheFriendlySetup(bodies, body_count, manifolds,
+                                                          manifold_count, constraints,
+                                                          constraint_count, info, debug)
+             : btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
+                   bodies, body_count, manifolds, manifold_count, constraints, constraint_count,
+                   info, debug);
   if (noise_rates_ == nullptr) return result;
   // Only rods with a contact are turned here, so that which rods the solver turns does not depend
   // on how the islands are grouped into batches (a batch without contacts is not set up).
@@ -141,6 +146,18 @@ btScalar PeriodicContactSolver::solveGroupCacheFriendlySetup(
     }
   }
   return result;
+}
+
+btScalar PeriodicContactSolver::solveGroupCacheFriendlyIterations(
+    btCollisionObject** bodies, int body_count, btPersistentManifold** manifolds,
+    int manifold_count, btTypedConstraint** constraints, int constraint_count,
+    const btContactSolverInfo& info, btIDebugDraw* debug) {
+  if (exact_) {
+    return btMLCPSolver::solveGroupCacheFriendlyIterations(
+        bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, debug);
+  }
+  return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyIterations(
+      bodies, body_count, manifolds, manifold_count, constraints, constraint_count, info, debug);
 }
 
 btScalar PeriodicContactSolver::solveSingleIteration(

@@ -2,7 +2,8 @@
 
 #include <BulletCollision/BroadphaseCollision/btOverlappingPairCache.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
-#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
+#include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
 
 #include <array>
 #include <cstdint>
@@ -52,10 +53,22 @@ class PeriodicOverlapFilter : public btOverlapFilterCallback {
 
 /// Contact solver for periodic images: a contact with an image is handed to the solver as a
 /// contact with the real rod, its contact point moved back by the image's shift.
-class PeriodicContactSolver : public btSequentialImpulseConstraintSolver {
+/// It is Bullet's sequential-impulse solver unless set_exact(), which solves each batch's contacts
+/// as one linear complementarity problem (Bullet's MLCP solver with its Dantzig algorithm); that
+/// is a diagnostic (engine::Model::exact_contact_solver), not meant for piles.
+class PeriodicContactSolver : public btMLCPSolver {
  public:
   PeriodicContactSolver(const PeriodicCell& cell, const std::vector<btRigidBody*>& rods)
-      : cell_(cell), rods_(rods) {}
+      : btMLCPSolver(&dantzig_), cell_(cell), rods_(rods) {}
+
+  /// engine::Model::exact_contact_solver.
+  void set_exact(bool exact) { exact_ = exact; }
+  /// Solves since construction that the exact solver gave up on and left to the sequential-impulse
+  /// iterations (a singular or ill-conditioned problem).
+  int exact_fallbacks() const { return getNumFallbacks(); }
+  btConstraintSolverType getSolverType() const override {
+    return exact_ ? BT_MLCP_SOLVER : BT_SEQUENTIAL_IMPULSE_SOLVER;
+  }
 
   /// Each sweep meets the contacts in a random order drawn from `stream` (periodic_boundary.cpp,
   /// "Sweep order"); call before each step with a stream made from the seed and the step.
@@ -77,6 +90,11 @@ class PeriodicContactSolver : public btSequentialImpulseConstraintSolver {
                                         btTypedConstraint** constraints, int constraint_count,
                                         const btContactSolverInfo& info,
                                         btIDebugDraw* debug) override;
+  btScalar solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int body_count,
+                                             btPersistentManifold** manifolds, int manifold_count,
+                                             btTypedConstraint** constraints, int constraint_count,
+                                             const btContactSolverInfo& info,
+                                             btIDebugDraw* debug) override;
   void convertContacts(btPersistentManifold** manifolds, int manifold_count,
                        const btContactSolverInfo& info) override;
   btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int body_count,
@@ -92,6 +110,8 @@ class PeriodicContactSolver : public btSequentialImpulseConstraintSolver {
   bool fixed_sweep_order_ = false;
   const std::vector<double>* noise_rates_ = nullptr;
   std::vector<char>* noise_turned_ = nullptr;
+  btDantzigSolver dantzig_;
+  bool exact_ = false;
 };
 
 }  // namespace rodsort::engine

@@ -245,6 +245,7 @@ struct Simulation::Impl {
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(overlap_filter.get());
     solver = std::make_unique<PeriodicContactSolver>(cell, rods);
     solver->set_fixed_sweep_order(model.fixed_sweep_order);
+    solver->set_exact(model.exact_contact_solver);
     if (model.full_turn_correction) solver->set_noise_turns(&noise_rate, &noise_turned);
     world = std::make_unique<RodWorld>(dispatcher.get(), broadphase.get(), solver.get(),
                                        configuration.get());
@@ -256,6 +257,7 @@ struct Simulation::Impl {
     world->getDispatchInfo().m_useContinuous = false;
     btContactSolverInfo& info = world->getSolverInfo();
     info.m_numIterations = model.solver_iterations;
+    info.m_globalCfm = model.constraint_force_mixing;
     // Two friction directions per contact: with Bullet's default single direction (along the
     // current sliding velocity) a rod on the vibrated plate spins up by itself, turning ~25 rad in
     // 5 s without any noise. Warm starting stays on: it is also what makes Bullet write the
@@ -618,7 +620,11 @@ void Simulation::advance(std::int64_t steps) {
 double Simulation::time() const { return impl_->time; }
 std::int64_t Simulation::step_count() const { return impl_->step; }
 const Model& Simulation::model() const { return impl_->model; }
-SimulationCounters Simulation::counters() const { return impl_->counters; }
+SimulationCounters Simulation::counters() const {
+  SimulationCounters counters = impl_->counters;
+  counters.exact_solver_fallbacks = impl_->solver->exact_fallbacks();
+  return counters;
+}
 void Simulation::reset_counters() { impl_->counters = {}; }
 
 Frame Simulation::frame() const {

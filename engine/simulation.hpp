@@ -17,6 +17,9 @@ struct SimulationCounters {
   /// the Simulation was built or its counters reset (contact depths at the start of each step)
   /// [mm].
   double deepest_overlap = 0.0;
+  /// Contact solves that Model::exact_contact_solver gave up on and left to the sequential-impulse
+  /// iterations, since the world was built (from the Model or a restored State).
+  std::int64_t exact_solver_fallbacks = 0;
 };
 
 /// A Bullet world built from a Model, stepped with the Model's fixed dt.
