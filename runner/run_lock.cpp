@@ -24,6 +24,15 @@ std::optional<RunLock> RunLock::acquire(const std::filesystem::path& directory) 
   return RunLock(fd);
 }
 
+bool RunLock::held(const std::filesystem::path& directory) {
+  const std::filesystem::path path = directory / kRunLockFile;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool taken = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+  ::close(fd);
+  return taken;
+}
+
 RunLock::RunLock(RunLock&& other) noexcept : fd_(other.fd_) { other.fd_ = -1; }
 
 RunLock& RunLock::operator=(RunLock&& other) noexcept {

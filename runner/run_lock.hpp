@@ -16,6 +16,10 @@ class RunLock {
   /// Takes the lock of `directory` (which must exist); nullopt when another process holds it.
   /// Throws std::runtime_error when the lock file cannot be created.
   static std::optional<RunLock> acquire(const std::filesystem::path& directory);
+  /// Whether a process holds the lock of `directory` now (a run is writing there). Creates
+  /// nothing; takes a shared lock for an instant, so a run starting at that very instant may be
+  /// refused as if another held it.
+  static bool held(const std::filesystem::path& directory);
 
   RunLock(RunLock&& other) noexcept;
   RunLock& operator=(RunLock&& other) noexcept;

@@ -1,11 +1,15 @@
 #include "runner/sweep.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstring>
 #include <ostream>
 
+#include "runner/append_file.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/cost_estimate.hpp"
 #include "runner/csv_table.hpp"
@@ -19,6 +23,7 @@
 #include "runner/run_directory.hpp"
 #include "runner/run_record.hpp"
 #include "runner/run_summary.hpp"
+#include "runner/slurm.hpp"
 #include "runner/usable_cpus.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/sweep.hpp"
@@ -30,7 +35,7 @@ constexpr const char* kSweepCsvFile = "sweep.csv";
 constexpr const char* kScenariosDirectory = "scenarios";
 constexpr const char* kLogsDirectory = "logs";
 
-enum class PointAction { kSkip, kStart, kResume, kRestart };
+enum class PointAction { kSkip, kStart, kResume, kRestart, kExtend };
 
 struct PointPlan {
   std::string name;
@@ -38,20 +43,41 @@ struct PointPlan {
   std::string resolved_yaml;
   PointAction action = PointAction::kStart;
   std::size_t rods = 0;
-  CostEstimate cost{};  ///< of the whole run
+  double duration = 0.0;  ///< run.duration [s]
+  CostEstimate cost{};    ///< of the whole run
 };
 
 /// A number for sweep.csv: shortest exact text, "nan" when undefined.
 std::string number_text(double value) { return std::isnan(value) ? "nan" : json_number(value); }
 
+/// Whether the run in `run_directory` is of the point's scenario but for a shorter run.duration,
+/// and has not gone beyond `duration`: it can be continued to it.
+bool extendable_to(const std::filesystem::path& run_directory, const std::string& resolved_yaml,
+                   double duration) {
+  const auto record = read_run_record(run_directory);
+  if (!record || record->simulated_s > duration ||
+      !std::filesystem::exists(run_directory / kCheckpointFile)) {
+    return false;
+  }
+  char value[64];
+  std::snprintf(value, sizeof value, "run.duration=%.17g", duration);
+  const scenarios::LoadResult longer =
+      scenarios::load_scenario_with_options(run_directory / kResolvedScenarioFile, {value});
+  return longer.ok() && scenarios::resolved_yaml(*longer.scenario) == resolved_yaml;
+}
+
 /// What to do with a point, given what its run directory holds; empty message when it may go on.
-PointAction decide(const std::filesystem::path& run_directory, const std::string& resolved_yaml,
-                   bool force, std::string& conflict) {
+PointAction decide(const std::filesystem::path& run_directory, const PointPlan& plan, bool force,
+                   std::string& conflict) {
   if (!holds_run(run_directory)) return PointAction::kStart;
   const std::filesystem::path resolved = run_directory / kResolvedScenarioFile;
   const bool same_scenario =
-      std::filesystem::exists(resolved) && read_file(resolved) == resolved_yaml;
+      std::filesystem::exists(resolved) && read_file(resolved) == plan.resolved_yaml;
   if (!same_scenario) {
+    if (std::filesystem::exists(resolved) &&
+        extendable_to(run_directory, plan.resolved_yaml, plan.duration)) {
+      return PointAction::kExtend;
+    }
     if (force) return PointAction::kRestart;
     conflict = run_directory.string() + " holds a run of a different scenario";
     return PointAction::kSkip;
@@ -67,10 +93,15 @@ PointAction decide(const std::filesystem::path& run_directory, const std::string
 std::vector<std::string> point_command(const std::filesystem::path& executable,
                                        const std::filesystem::path& scenario_file,
                                        const std::filesystem::path& run_directory,
-                                       PointAction action, bool any_build) {
+                                       const PointPlan& point, bool any_build) {
   const std::string program = executable.string();
-  if (action == PointAction::kResume) {
+  const PointAction action = point.action;
+  if (action == PointAction::kResume || action == PointAction::kExtend) {
     std::vector<std::string> argv = {program, "run", "--resume", run_directory.string()};
+    if (action == PointAction::kExtend) {
+      argv.push_back("--duration");
+      argv.push_back(json_number(point.duration));
+    }
     if (any_build) argv.push_back("--any-build");
     return argv;
   }
@@ -102,6 +133,8 @@ const char* describe_action(PointAction action) {
       return "to resume from its checkpoint";
     case PointAction::kRestart:
       return "to run again (--force)";
+    case PointAction::kExtend:
+      return "to continue to the new run.duration";
   }
   return "";
 }
@@ -129,6 +162,89 @@ void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& poi
   } else {
     out << "nothing to run\n";
   }
+}
+
+/// --point: the one point, in this process (exec), as a task of a Slurm array runs it.
+int run_point(const SweepRequest& request, const std::filesystem::path& executable,
+              const std::filesystem::path& directory, const std::vector<PointPlan>& points,
+              std::ostream& out, std::ostream& err) {
+  const PointPlan* chosen = nullptr;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (points[p].name == request.point || std::to_string(p) == request.point) chosen = &points[p];
+  }
+  if (chosen == nullptr) {
+    err << "rodsort: --point " << request.point << ": the sweep has no such point (give its index, "
+        << "0 to " << points.size() - 1 << ", or its name)\n";
+    return kExitUsage;
+  }
+  if (chosen->action == PointAction::kSkip) {
+    out << "rodsort: point " << chosen->name << " is complete; nothing to do\n";
+    return kExitOk;
+  }
+  std::filesystem::create_directories(directory / kScenariosDirectory);
+  const std::filesystem::path scenario_file =
+      directory / kScenariosDirectory / (chosen->name + ".yaml");
+  if (chosen->action == PointAction::kStart || chosen->action == PointAction::kRestart) {
+    write_file_atomically(scenario_file, chosen->resolved_yaml);
+  }
+  const std::vector<std::string> argv = point_command(
+      executable, scenario_file, directory / chosen->name, *chosen, request.any_build);
+  out << "rodsort: point " << chosen->name << ' ' << describe_action(chosen->action) << ":";
+  for (const std::string& word : argv) out << ' ' << shell_quote(word);
+  out << std::endl;
+  std::vector<char*> args;
+  for (const std::string& word : argv) args.push_back(const_cast<char*>(word.c_str()));
+  args.push_back(nullptr);
+  ::execv(args[0], args.data());
+  err << "rodsort: cannot run " << argv[0] << ": " << std::strerror(errno) << '\n';
+  return kExitFailure;
+}
+
+/// --slurm: the points to run as one job array.
+int submit_array(const SweepRequest& request, const scenarios::Sweep& sweep,
+                 const std::filesystem::path& executable, const std::filesystem::path& directory,
+                 const std::vector<PointPlan>& points, std::ostream& out, std::ostream& err) {
+  SlurmArray array;
+  array.sweep_name = sweep.name;
+  array.executable = std::filesystem::absolute(executable);
+  array.sweep_file = std::filesystem::absolute(request.sweep_file);
+  array.directory = std::filesystem::absolute(directory);
+  array.set_options = request.set_options;
+  array.any_build = request.any_build;
+  CostEstimate total{0.0, 0.0};
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (points[p].action == PointAction::kSkip) continue;
+    array.points.push_back(p);
+    total.low_cpu_s += points[p].cost.low_cpu_s;
+    total.high_cpu_s += points[p].cost.high_cpu_s;
+  }
+  if (array.points.empty()) {
+    out << "rodsort: sweep " << sweep.name << ": every point is complete; nothing to submit\n";
+    return kExitOk;
+  }
+  const std::filesystem::path script = directory / "slurm" / "sweep.sbatch";
+  std::filesystem::create_directories(script.parent_path());
+  write_file_atomically(script, sbatch_script(array, request.slurm));
+  std::filesystem::permissions(script, std::filesystem::perms::owner_exec,
+                               std::filesystem::perm_options::add);
+  out << "rodsort: sweep " << sweep.name << ": " << array.points.size() << " of " << points.size()
+      << " points to run (" << describe_cost(total) << " in all), array script " << script.string()
+      << '\n';
+  if (!request.slurm.submit) {
+    out << "rodsort: not submitted (--no-submit); submit it with: sbatch "
+        << shell_quote(script.string()) << '\n';
+    return kExitOk;
+  }
+  try {
+    const std::string job = submit_sbatch(script);
+    AppendFile(directory / "slurm" / "jobs.txt").append(job + ' ' + utc_now_iso8601() + '\n');
+    out << "rodsort: submitted job array " << job << "; follow it with: rodsort sweep --status "
+        << shell_quote(directory.string()) << '\n';
+  } catch (const std::exception& error) {
+    err << "rodsort: " << error.what() << '\n';
+    return kExitFailure;
+  }
+  return kExitOk;
 }
 
 }  // namespace
@@ -181,7 +297,8 @@ void write_sweep_csv(const std::filesystem::path& sweep_directory,
 }
 
 int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err) {
-  const scenarios::SweepLoadResult loaded = scenarios::load_sweep(request.sweep_file, true);
+  const scenarios::SweepLoadResult loaded =
+      scenarios::load_sweep(request.sweep_file, true, request.set_options);
   err << scenarios::format_diagnostics(loaded.diagnostics);
   if (!loaded.ok()) {
     err << "rodsort: " << request.sweep_file.string() << " refused; nothing was written\n";
@@ -210,9 +327,10 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
       plan.values.push_back(value.value_text());
     plan.resolved_yaml = scenarios::resolved_yaml(*scenario.scenario);
     plan.rods = scenario.scenario->model.rods.size();
+    plan.duration = scenario.scenario->run.duration;
     plan.cost = estimate_cost(scenario.scenario->model, scenario.scenario->run.steps);
     std::string conflict;
-    plan.action = decide(directory / point.name, plan.resolved_yaml, request.force, conflict);
+    plan.action = decide(directory / point.name, plan, request.force, conflict);
     if (!conflict.empty()) conflicts.push_back(conflict);
     points.push_back(std::move(plan));
   }
@@ -227,6 +345,11 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     print_plan(sweep, points, directory, out);
     return kExitOk;
   }
+  const std::filesystem::path executable =
+      request.executable.empty() ? current_executable() : request.executable;
+  if (!request.point.empty()) {
+    return run_point(request, executable, directory, points, out, err);
+  }
 
   std::filesystem::create_directories(directory / kScenariosDirectory);
   std::filesystem::create_directories(directory / kLogsDirectory);
@@ -237,9 +360,10 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     values.push_back(point.values);
   }
   write_sweep_csv(directory, sweep.keys, names, values);
+  if (request.slurm.enabled) {
+    return submit_array(request, sweep, executable, directory, points, out, err);
+  }
 
-  const std::filesystem::path executable =
-      request.executable.empty() ? current_executable() : request.executable;
   std::vector<Job> jobs;
   std::vector<std::size_t> job_point;
   std::size_t skipped = 0;
@@ -251,12 +375,12 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     }
     const std::filesystem::path scenario_file =
         directory / kScenariosDirectory / (point.name + ".yaml");
-    if (point.action != PointAction::kResume) {
+    if (point.action == PointAction::kStart || point.action == PointAction::kRestart) {
       write_file_atomically(scenario_file, point.resolved_yaml);
     }
-    jobs.push_back({point_command(executable, scenario_file, directory / point.name, point.action,
-                                  request.any_build),
-                    directory / kLogsDirectory / (point.name + ".log")});
+    jobs.push_back(
+        {point_command(executable, scenario_file, directory / point.name, point, request.any_build),
+         directory / kLogsDirectory / (point.name + ".log")});
     job_point.push_back(p);
   }
   const int parallel =
@@ -277,7 +401,10 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
   PoolCallbacks callbacks;
   callbacks.on_start = [&](std::size_t job) {
     const PointPlan& point = points[job_point[job]];
-    log("  started  " + point.name + (point.action == PointAction::kResume ? " (resuming)" : ""));
+    const char* how = point.action == PointAction::kResume   ? " (resuming)"
+                      : point.action == PointAction::kExtend ? " (continuing to the new duration)"
+                                                             : "";
+    log("  started  " + point.name + how);
   };
   callbacks.on_finish = [&](std::size_t job, const JobResult& result) {
     const PointPlan& point = points[job_point[job]];

@@ -208,7 +208,8 @@ std::string default_name_of(const std::filesystem::path& path) {
 
 }  // namespace
 
-SweepLoadResult load_sweep(const std::filesystem::path& path, bool check_points) {
+SweepLoadResult load_sweep(const std::filesystem::path& path, bool check_points,
+                           const std::vector<std::string>& set_options) {
   Diagnostics diagnostics;
   SweepLoadResult result;
   const std::optional<SourceNode> root = read_yaml_file(path, diagnostics);
@@ -278,6 +279,16 @@ SweepLoadResult load_sweep(const std::filesystem::path& path, bool check_points)
         diagnostics.error(grid->where, sweep.keys[i], "is swept twice in the grid");
       }
     }
+  }
+  for (const std::string& option : set_options) {
+    std::optional<Override> parsed = parse_set_option(option, diagnostics);
+    if (!parsed) continue;
+    if (std::find(sweep.keys.begin(), sweep.keys.end(), parsed->path) != sweep.keys.end()) {
+      diagnostics.error(parsed->where, parsed->path,
+                        "is swept by the grid; --set changes keys every point shares");
+      continue;
+    }
+    sweep.fixed.push_back(std::move(*parsed));
   }
   if (diagnostics.has_errors()) return {std::nullopt, diagnostics.all()};
   sweep.points = expand(axes);

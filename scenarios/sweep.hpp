@@ -41,8 +41,11 @@ struct SweepLoadResult {
 };
 
 /// Reads a sweep file and expands its grid. With `check_points`, every point is also loaded as a
-/// scenario (rods placed, nothing run) and its problems reported, each once.
-SweepLoadResult load_sweep(const std::filesystem::path& path, bool check_points = true);
+/// scenario (rods placed, nothing run) and its problems reported, each once. `set_options`
+/// ("key.path=value", as `rodsort sweep --set` takes them) are applied to every point after the
+/// file's own `set` values; a swept key cannot be set.
+SweepLoadResult load_sweep(const std::filesystem::path& path, bool check_points = true,
+                           const std::vector<std::string>& set_options = {});
 
 /// The scenario of one point: the base, the sweep's `set` values, then the point's; named
 /// "<base name>_<point name>".

@@ -10,6 +10,8 @@
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
+#include "runner/run_record.hpp"
+#include "runner/slurm.hpp"
 #include "runner/summarize.hpp"
 #include "support/temp_directory.hpp"
 
@@ -92,6 +94,38 @@ TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][
     std::fclose(log);
   }
 
+  SECTION("--status shows every point done and brings sweep.csv up to date") {
+    std::filesystem::remove(sweep / "sweep.csv");
+    write_sweep_csv(sweep, {"trap.angle"}, {"angle-40", "angle-60"}, {{"40"}, {"60"}});
+    CHECK(sweep_status(sweep, out, err) == kExitOk);
+    CHECK_THAT(out.str(), Catch::Contains("in all: 2 done"));
+    CHECK_THAT(out.str(), Catch::Contains("0.35 / 0.35"));
+    CHECK(read_csv(sweep / "sweep.csv").rows[1][2] == "complete");
+  }
+
+  SECTION("--set run.duration continues every point to the new time, as if run so from the start") {
+    SweepRequest longer = tiny_sweep(sweep);
+    longer.set_options = {"run.duration=0.49"};
+    REQUIRE(run_sweep(longer, out, err) == kExitOk);
+    SweepRequest fresh = tiny_sweep(directory / "fresh");
+    fresh.set_options = {"run.duration=0.49"};
+    REQUIRE(run_sweep(fresh, out, err) == kExitOk);
+    for (const char* point : {"angle-40", "angle-60"}) {
+      INFO(point);
+      CHECK(read_file(sweep / point / kRodsCsvFile) ==
+            read_file(directory / "fresh" / point / kRodsCsvFile));
+    }
+    CHECK(read_csv(sweep / "sweep.csv").rows[0][2] == "complete");
+  }
+
+  SECTION("a complete sweep has nothing to submit to Slurm") {
+    SweepRequest slurm = tiny_sweep(sweep);
+    slurm.slurm.enabled = true;
+    CHECK(run_sweep(slurm, out, err) == kExitOk);
+    CHECK_THAT(out.str(), Catch::Contains("nothing to submit"));
+    CHECK_FALSE(std::filesystem::exists(sweep / "slurm"));
+  }
+
   SECTION("summarize prints eta per point and looks for theta_c") {
     CHECK(summarize_sweep(sweep, out, err) == kExitOk);
     CHECK_THAT(out.str(), Catch::Contains("angle-40"));
@@ -151,4 +185,82 @@ TEST_CASE("summarize refuses a directory that is not a sweep", "[runner][sweep]"
   std::ostringstream out, err;
   CHECK(summarize_sweep(directory.path(), out, err) == kExitUsage);
   CHECK_THAT(err.str(), Catch::Contains("not a sweep directory"));
+}
+
+TEST_CASE("sweep --set applies to every point of a sweep but cannot change a swept key",
+          "[runner][sweep]") {
+  TempDirectory directory;
+  SweepRequest request = tiny_sweep(directory / "sweep");
+  request.dry_run = true;
+  request.set_options = {"trap.angle=50"};
+  std::ostringstream out, err;
+  CHECK(run_sweep(request, out, err) == kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("trap.angle"));
+  CHECK_THAT(err.str(), Catch::Contains("is swept by the grid"));
+  request.set_options = {"seed=11"};
+  std::ostringstream out2, err2;
+  CHECK(run_sweep(request, out2, err2) == kExitOk);
+}
+
+TEST_CASE("sweep --point runs one point of a sweep, by index or by name", "[runner][sweep]") {
+  TempDirectory directory;
+  const auto sweep = directory / "sweep";
+  const std::filesystem::path scratch = directory / "scratch";
+  std::filesystem::create_directories(scratch);
+  const auto point = [&](const std::string& which) {
+    return rodsort::runner::testing::run_rodsort(
+        {"sweep", kTinySweep, "-o", sweep.string(), "--point", which}, scratch);
+  };
+  const auto second = point("1");
+  INFO(second.out << second.err);
+  CHECK(second.status == kExitOk);
+  CHECK(read_run_record(sweep / "angle-60")->status == RunStatus::kComplete);
+  CHECK_FALSE(std::filesystem::exists(sweep / "angle-40"));
+  CHECK(point("angle-40").status == kExitOk);
+  CHECK(read_run_record(sweep / "angle-40")->status == RunStatus::kComplete);
+  const auto again = point("0");
+  CHECK(again.status == kExitOk);
+  CHECK_THAT(again.out, Catch::Contains("angle-40 is complete; nothing to do"));
+  const auto missing = point("2");
+  CHECK(missing.status == kExitUsage);
+  CHECK_THAT(missing.err, Catch::Contains("no such point (give its index, 0 to 1, or its name)"));
+}
+
+TEST_CASE("sweep --slurm --no-submit writes a job array of the points still to run",
+          "[runner][sweep]") {
+  TempDirectory directory;
+  const auto sweep = directory / "sweep";
+  SweepRequest request = tiny_sweep(sweep);
+  request.slurm.enabled = true;
+  request.slurm.submit = false;
+  request.slurm.partition = "short";
+  request.slurm.time_limit = "2:00:00";
+  request.slurm.memory = "1G";
+  request.slurm.account = "lab";
+  request.slurm.throttle = 3;
+  request.slurm.extra_lines = {"--qos=long"};
+  request.set_options = {"seed=11"};
+  std::ostringstream out, err;
+  REQUIRE(run_sweep(request, out, err) == kExitOk);
+  CHECK_THAT(out.str(), Catch::Contains("2 of 2 points to run"));
+  CHECK_THAT(out.str(), Catch::Contains("not submitted (--no-submit)"));
+  const std::string script = read_file(sweep / "slurm" / "sweep.sbatch");
+  for (const char* line :
+       {"#SBATCH --array=0-1%3\n", "#SBATCH --partition=short\n", "#SBATCH --time=2:00:00\n",
+        "#SBATCH --mem=1G\n", "#SBATCH --account=lab\n", "#SBATCH --qos=long\n",
+        "#SBATCH --cpus-per-task=1\n", "#SBATCH --signal=B:TERM@300\n"}) {
+    CHECK_THAT(script, Catch::Contains(line));
+  }
+  CHECK_THAT(script, Catch::Contains("--point \"$SLURM_ARRAY_TASK_ID\" --set seed=11\n"));
+  CHECK_THAT(script, Catch::Contains("exec "));
+  // The table lists the points before any has run.
+  CHECK(read_csv(sweep / "sweep.csv").rows.size() == 2);
+}
+
+TEST_CASE("Slurm's array ranges and shell words", "[runner][sweep]") {
+  CHECK(array_ranges({0, 1, 2, 3, 5, 7, 8, 9}) == "0-3,5,7-9");
+  CHECK(array_ranges({4}) == "4");
+  CHECK(shell_quote("/data/runs/fig2b") == "/data/runs/fig2b");
+  CHECK(shell_quote("my runs/it's") == "'my runs/it'\\''s'");
+  CHECK(shell_quote("") == "''");
 }
