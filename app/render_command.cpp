@@ -24,7 +24,7 @@ int render_run_directory(const render::RenderRequest& request) {
     return runner::kExitUsage;
   }
   const scenarios::LoadResult loaded = scenarios::load_scenario(resolved);
-  std::cerr << scenarios::format_diagnostics(loaded.diagnostics);
+  std::cerr << scenarios::format_diagnostics(loaded.diagnostics, false);
   if (!loaded.ok()) return runner::kExitFailure;
   // The run's own metrics settings, so that the marks and eta match its metrics.csv.
   const render::RenderResult result =
@@ -50,8 +50,10 @@ Command add_render_command(CLI::App& app) {
                      "Times [s] to draw, the nearest frame each (default: the first and the last "
                      "frame); several may follow one --at");
   render->add_flag("--svg", request->svg, "Also write each picture as SVG");
-  render->add_flag("--movie", request->movie,
-                   "Also make RUN_DIR/render/movie.mp4 of every frame (needs ffmpeg)");
+  render->add_flag(
+      "--movie", request->movie,
+      "Also make movie.mp4 of every frame in the output directory (-o; default RUN_DIR/render; "
+      "needs ffmpeg)");
   render->add_option("--every", request->movie_every, "Movie: take every N-th frame (default 1)")
       ->check(positive_number());
   render->add_option("--fps", request->movie_fps, "Movie: frames per second (default 20)")

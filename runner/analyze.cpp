@@ -48,7 +48,15 @@ int analyze_run(const AnalyzeRequest& request, std::ostream& err) {
 
   const scenarios::LoadResult loaded =
       scenarios::load_scenario_with_options(resolved, request.set_options);
-  err << scenarios::format_diagnostics(loaded.diagnostics);
+  // The run said the scenario's own warnings when it started; only those of --set are new.
+  std::vector<scenarios::Diagnostic> news;
+  for (const scenarios::Diagnostic& diagnostic : loaded.diagnostics) {
+    if (diagnostic.severity == scenarios::Severity::error ||
+        diagnostic.where.source.rfind("--set", 0) == 0) {
+      news.push_back(diagnostic);
+    }
+  }
+  err << scenarios::format_diagnostics(news);
   if (!loaded.ok()) return request.set_options.empty() ? kExitFailure : kExitUsage;
   metrics::MetricsObserver observer(metrics_config(*loaded.scenario));
 

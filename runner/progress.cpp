@@ -30,12 +30,15 @@ std::string format_duration(double seconds) {
   return text;
 }
 
-std::string format_progress(const ProgressSample& sample) {
+std::string format_progress(const ProgressSample& sample, bool final) {
   char text[160];
   int length = std::snprintf(text, sizeof text, "%5.1f%%  t = %.2f / %.2f s",
                              100.0 * fraction_done(sample), sample.simulated_s, sample.duration_s);
   const double simulated_this_session = sample.simulated_s - sample.session_start_s;
-  if (simulated_this_session > 0.0 && length > 0) {
+  // The first seconds of a process (placement, the first checkpoint, a cold cache) say little
+  // about its pace: no ETA or rate from them, except on the last line.
+  const bool settled = final || sample.session_wall_s >= kProgressSettleWallS;
+  if (settled && simulated_this_session > 0.0 && length > 0) {
     const double remaining_s = std::max(0.0, sample.duration_s - sample.simulated_s);
     const double eta_s = remaining_s * sample.session_wall_s / simulated_this_session;
     const double cpu_per_sim = sample.session_cpu_s / simulated_this_session;
@@ -63,14 +66,16 @@ void ProgressReporter::update(const ProgressSample& sample) {
 }
 
 void ProgressReporter::finish(const ProgressSample& sample) {
-  const bool already_shown = printed_any_ && !terminal_ && last_fraction_ == fraction_done(sample);
-  if (!already_shown) print(sample);
+  const bool already_shown = printed_any_ && !terminal_ &&
+                             last_fraction_ == fraction_done(sample) &&
+                             last_wall_s_ >= kProgressSettleWallS;
+  if (!already_shown) print(sample, true);
   if (terminal_) std::fputc('\n', out_);
   std::fflush(out_);
 }
 
-void ProgressReporter::print(const ProgressSample& sample) {
-  const std::string line = format_progress(sample);
+void ProgressReporter::print(const ProgressSample& sample, bool final) {
+  const std::string line = format_progress(sample, final);
   if (terminal_) {
     // Pad over the previous line instead of an escape sequence, which some terminals ignore.
     const std::size_t pad = last_width_ > line.size() ? last_width_ - line.size() : 0;

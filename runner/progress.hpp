@@ -21,9 +21,13 @@ struct ProgressSample {
 /// Durations for humans: 45s, 3m12s, 2h05m.
 std::string format_duration(double seconds);
 
+/// Wall seconds of a process before its progress lines give an ETA and a rate.
+inline constexpr double kProgressSettleWallS = 5.0;
+
 /// One progress line, e.g. " 42.0%  t = 12.60 / 30.00 s  ETA 3m12s  8.31 CPU-s per sim-s".
-/// ETA and the rate are left out until some simulated time has passed.
-std::string format_progress(const ProgressSample& sample);
+/// ETA and the rate are left out until the process has run kProgressSettleWallS and some
+/// simulated time has passed, except on the `final` line.
+std::string format_progress(const ProgressSample& sample, bool final = false);
 
 class ProgressReporter {
  public:
@@ -43,7 +47,7 @@ class ProgressReporter {
   static constexpr double kLogIntervalFraction = 0.1;
 
  private:
-  void print(const ProgressSample& sample);
+  void print(const ProgressSample& sample, bool final = false);
 
   std::FILE* out_;
   bool terminal_;

@@ -125,7 +125,7 @@ int resume_run_directory(const std::filesystem::path& directory, const RunOption
   char value[64];
   std::snprintf(value, sizeof value, "run.duration=%.17g", *duration);
   const scenarios::LoadResult longer = scenarios::load_scenario_with_options(resolved, {value});
-  err << scenarios::format_diagnostics(longer.diagnostics);
+  err << scenarios::format_diagnostics(longer.diagnostics, false);
   if (!longer.ok()) {
     err << "rodsort: cannot continue " << directory.string() << " to t = " << *duration
         << " s; nothing was changed\n";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "engine/units.hpp"
@@ -405,12 +406,39 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   }
   scenario.metrics.stationary_threshold = spec.stationary_threshold.value;
   scenario.metrics.window = spec.metrics_window.value;
-  if (spec.metrics_window.value < spec.frame_interval.value * (1.0 - 1e-9)) {
-    diagnostics.error(spec.metrics_window.where, spec.metrics_window.path,
-                      "must be at least output.frame_interval (" +
-                          format_real(spec.frame_interval.value) + " s), got " +
-                          format_real(spec.metrics_window.value) +
-                          " s: speeds are measured between frames");
+  const auto short_real = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return std::string(text);
+  };
+  const double window_frames = spec.metrics_window.value / spec.frame_interval.value;
+  if (window_frames < 1.0 - 1e-9) {
+    // Pointed at the key the user wrote: the window, or else the frame interval.
+    if (spec.metrics_window.given || !spec.frame_interval.given) {
+      diagnostics.error(spec.metrics_window.where, spec.metrics_window.path,
+                        "must be at least output.frame_interval (" +
+                            format_real(spec.frame_interval.value) + " s), got " +
+                            format_real(spec.metrics_window.value) +
+                            " s: speeds are measured between frames");
+    } else {
+      diagnostics.error(spec.frame_interval.where, spec.frame_interval.path,
+                        "must be at most metrics.window (" +
+                            format_real(spec.metrics_window.value) + " s, its default), got " +
+                            format_real(spec.frame_interval.value) +
+                            " s: speeds are measured between frames; set metrics.window too");
+    }
+  } else if (std::abs(window_frames - std::round(window_frames)) > 1e-3) {
+    // The observer measures a speed between a frame and the latest frame at least one window
+    // earlier (metrics_observer.cpp): over a whole number of frame intervals.
+    const double frames = std::ceil(window_frames - 1e-3);
+    diagnostics.warning(
+        spec.metrics_window.given ? spec.metrics_window.where : spec.frame_interval.where,
+        spec.metrics_window.path,
+        format_real(spec.metrics_window.value) +
+            " s is not a multiple of output.frame_interval = " +
+            format_real(spec.frame_interval.value) + " s; speeds are measured over " +
+            format_real(frames) + " frame intervals (" +
+            short_real(frames * spec.frame_interval.value) + " s)");
   }
 
   if (diagnostics.error_count() != errors_before) return std::nullopt;

@@ -33,10 +33,11 @@ std::size_t Diagnostics::error_count() const {
       all_.begin(), all_.end(), [](const Diagnostic& d) { return d.severity == Severity::error; }));
 }
 
-std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics) {
+std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics, bool with_warnings) {
   std::string text;
   std::size_t errors = 0;
   for (const Diagnostic& diagnostic : diagnostics) {
+    if (!with_warnings && diagnostic.severity == Severity::warning) continue;
     text += diagnostic.to_string() + "\n";
     if (diagnostic.severity == Severity::error) ++errors;
   }

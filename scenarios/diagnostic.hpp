@@ -46,6 +46,9 @@ class Diagnostics {
 };
 
 /// One diagnostic per line, in the order found, and a last line counting the errors when any.
-std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics);
+/// Without `with_warnings`, the errors only: for a scenario read again after the run that
+/// already said its warnings (render, analyze, a run continued to a longer duration).
+std::string format_diagnostics(const std::vector<Diagnostic>& diagnostics,
+                               bool with_warnings = true);
 
 }  // namespace rodsort::scenarios

@@ -142,7 +142,7 @@ std::vector<KeyInfo> scenario_keys() {
       {"trap.direction", V::real, "degrees", "45", closed(-360, 360), {},
        "Direction of the bisector from the apex into the opening, from +x. Along the cell's "
        "diagonal (45) the paper's widest traps (160 degrees, 45 mm arms) fit in its 86.85 mm "
-       "cell; along an edge (0) only those up to about 120 degrees do."},
+       "cell; along an edge (0) only those up to 125 degrees do."},
 
       {"materials", V::free_map, "", "{}", {}, {},
        "Pair table of contact coefficients, keyed `a-b` by material names: base, lid, wall (the "
@@ -181,7 +181,7 @@ std::vector<KeyInfo> scenario_keys() {
 
       {"metrics", V::section, "", "", {}, {}, "Trapping measurements."},
       {"metrics.window", V::real, "s", "0.07", positive(), {},
-       "tau: a rod's speed is its displacement over this window; a multiple of frame_interval."},
+       "tau: a rod's speed is its displacement over this window; a multiple of frame_interval (another value is rounded up to one, with a warning)."},
       {"metrics.stationary_threshold", V::real, "mm/s", "5", non_negative(), {},
        "A rod is stationary (the paper's zero velocity) when its speed is below this."},
 

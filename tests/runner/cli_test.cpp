@@ -168,3 +168,27 @@ TEST_CASE("a sweep file given to run, or a scenario given to sweep, gets a hint"
   CHECK(swept.status == kExitUsage);
   CHECK_THAT(swept.err, Catch::Contains("looks like a scenario"));
 }
+
+TEST_CASE("a warning about the scenario is printed by run, not again by render and analyze",
+          "[runner][cli]") {
+  TempDirectory scratch;
+  const auto run = scratch / "run";
+  const auto ran = run_rodsort({"run", kTiny, "-o", run.string(), "-q", "--set",
+                                "output.frame_interval=0.03505", "--set", "run.duration=0.14"},
+                               scratch.path());
+  REQUIRE(ran.status == kExitOk);
+  CHECK_THAT(ran.err, Catch::Contains("warning: ") && Catch::Contains("not a multiple of run.dt"));
+  const auto analyzed = run_rodsort({"analyze", run.string()}, scratch.path());
+  CHECK(analyzed.status == kExitOk);
+  CHECK_THAT(analyzed.err, !Catch::Contains("warning"));
+  const auto rendered =
+      run_rodsort({"render", run.string(), "-o", (scratch / "pictures").string()}, scratch.path());
+  CHECK(rendered.status == kExitOk);
+  CHECK_THAT(rendered.err, !Catch::Contains("warning"));
+  // A warning of analyze's own --set is new, and said.
+  const auto reanalyzed = run_rodsort({"analyze", run.string(), "--set", "metrics.window=0.09",
+                                       "-o", (scratch / "again.csv").string()},
+                                      scratch.path());
+  CHECK_THAT(reanalyzed.err, Catch::Contains("--set metrics.window=0.09: warning") &&
+                                 Catch::Contains("over 3 frame intervals (0.10515 s)"));
+}

@@ -55,6 +55,21 @@ TEST_CASE("a progress line leaves out rates before any time has passed", "[runne
   CHECK(format_progress(sample) == " 50.0%  t = 5.00 / 10.00 s");
 }
 
+TEST_CASE("a progress line gives no ETA from the first, cold seconds of a process",
+          "[runner][progress]") {
+  ProgressSample sample;
+  sample.simulated_s = 0.2;
+  sample.duration_s = 300.0;
+  sample.session_wall_s = 1.0;  // placement and the first checkpoint: 20 CPU-s per sim-s
+  sample.session_cpu_s = 4.0;
+  CHECK(format_progress(sample) == "  0.1%  t = 0.20 / 300.00 s");
+  // The last line of a short run still says what it cost.
+  CHECK(format_progress(sample, true) ==
+        "  0.1%  t = 0.20 / 300.00 s  ETA 24m59s  20 CPU-s per sim-s");
+  sample.session_wall_s = kProgressSettleWallS;
+  CHECK_THAT(format_progress(sample), Catch::Contains("ETA"));
+}
+
 TEST_CASE("off a terminal, progress is printed every tenth or every minute", "[runner][progress]") {
   std::FILE* stream = std::tmpfile();
   REQUIRE(stream != nullptr);
