@@ -62,6 +62,9 @@ Command add_render_command(CLI::App& app) {
       ->add_option("--width", request->view.width_px,
                    "Picture width in pixels (default 1000); the height follows the cell")
       ->check(CLI::Range(render::kMinimumWidth, 8000));
+  render->add_flag(
+      "--no-header", [request](std::int64_t) { request->view.header = false; },
+      "Leave out the line of name, time and eta above the cell (for a figure)");
   render->add_option("-o,--output", request->output,
                      "Directory for the pictures (default: RUN_DIR/render)");
   return {render, [request] { return render_run_directory(*request); }};

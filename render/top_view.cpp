@@ -7,7 +7,9 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +34,45 @@ void set_font(cairo_t* cairo, double size, bool bold = false) {
   cairo_select_font_face(cairo, kFont, CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cairo, size);
+}
+
+/// Text at (x, y) (its baseline's start) in the current colour: drawn, or, with `svg_text`,
+/// appended to it as an SVG <text> element.
+void put_text(cairo_t* cairo, std::string* svg_text, double x, double y, double size, bool bold,
+              const std::string& text) {
+  if (svg_text == nullptr) {
+    set_font(cairo, size, bold);
+    cairo_move_to(cairo, x, y);
+    cairo_show_text(cairo, text.c_str());
+    return;
+  }
+  std::string escaped;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        escaped += "&amp;";
+        break;
+      case '<':
+        escaped += "&lt;";
+        break;
+      case '>':
+        escaped += "&gt;";
+        break;
+      default:
+        escaped += c;
+    }
+  }
+  double red = 0, green = 0, blue = 0, alpha = 0;
+  cairo_pattern_get_rgba(cairo_get_source(cairo), &red, &green, &blue, &alpha);
+  char element[256];
+  std::snprintf(
+      element, sizeof element,
+      "<text xml:space=\"preserve\" x=\"%.2f\" y=\"%.2f\" font-family=\"%s\" font-size=\"%.2f\"%s "
+      "fill=\"rgb(%d,%d,%d)\">",
+      x, y, kFont, size, bold ? " font-weight=\"bold\"" : "",
+      static_cast<int>(std::lround(255 * red)), static_cast<int>(std::lround(255 * green)),
+      static_cast<int>(std::lround(255 * blue)));
+  *svg_text += element + escaped + "</text>\n";
 }
 
 double text_width(cairo_t* cairo, const std::string& text) {
@@ -265,7 +306,8 @@ ViewLayout layout_view(const Scene& scene, const ViewOptions& options) {
   layout.cell_width = layout.width - 2.0 * layout.margin;
   layout.scale = layout.cell_width / scene.box_x;
   layout.cell_height = scene.box_y * layout.scale;
-  layout.cell_top = layout.margin + 2.9 * layout.font_size;
+  layout.cell_top = layout.margin + (options.header ? 2.9 * layout.font_size : 0.0);
+  layout.header = options.header;
   layout.legend_top = layout.cell_top + layout.cell_height + 0.8 * layout.font_size;
 
   const SurfacePtr scratch = surface_ptr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
@@ -278,8 +320,56 @@ ViewLayout layout_view(const Scene& scene, const ViewOptions& options) {
   return layout;
 }
 
+double scale_bar_length(double box_x) {
+  const double limit = box_x / 5.0;
+  double length = std::pow(10.0, std::floor(std::log10(limit)));
+  for (const double factor : {5.0, 2.0}) {
+    if (length * factor <= limit) {
+      length *= factor;
+      break;
+    }
+  }
+  return length;
+}
+
+namespace {
+
+/// A bar of scale_bar_length() in the cell's lower right corner, on a light box, its length above.
+void draw_scale_bar(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
+                    std::string* svg_text) {
+  const double length_mm = scale_bar_length(scene.box_x);
+  const double length_px = length_mm * layout.scale;
+  const double pad = 0.5 * layout.font_size;
+  const double right = layout.cell_left + layout.cell_width - 1.5 * pad;
+  const double bottom = layout.cell_top + layout.cell_height - 1.5 * pad;
+  const double left = right - length_px;
+  char label[32];
+  std::snprintf(label, sizeof label, "%g mm", length_mm);
+  set_font(cairo, 0.85 * layout.font_size);
+  const double label_width = text_width(cairo, label);
+  const double box_width = std::max(length_px, label_width) + 2.0 * pad;
+  const double box_left = right + pad - box_width;
+  const double box_top = bottom - 0.85 * layout.font_size - 2.2 * pad;
+  cairo_rectangle(cairo, box_left, box_top, box_width, bottom + pad - box_top);
+  cairo_set_source_rgba(cairo, 1.0, 1.0, 1.0, 0.8);
+  cairo_fill(cairo);
+  set_colour(cairo, kTextColour);
+  cairo_set_line_width(cairo, std::max(1.5, layout.width / 400.0));
+  cairo_move_to(cairo, left, bottom);
+  cairo_line_to(cairo, right, bottom);
+  for (const double x : {left, right}) {
+    cairo_move_to(cairo, x, bottom - 0.4 * pad);
+    cairo_line_to(cairo, x, bottom + 0.4 * pad);
+  }
+  cairo_stroke(cairo);
+  put_text(cairo, svg_text, 0.5 * (left + right) - 0.5 * label_width, bottom - 0.8 * pad,
+           0.85 * layout.font_size, false, label);
+}
+
+}  // namespace
+
 void draw_top_view(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
-                   const engine::Frame& frame, const FrameMarks& marks) {
+                   const engine::Frame& frame, const FrameMarks& marks, std::string* svg_text) {
   assert(marks.stationary.empty() || marks.stationary.size() == frame.rods.size());
   set_colour(cairo, kBackgroundColour);
   cairo_paint(cairo);
@@ -307,13 +397,15 @@ void draw_top_view(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
   set_colour(cairo, kCellEdgeColour);
   cairo_stroke(cairo);
 
+  draw_scale_bar(cairo, layout, scene, svg_text);
+
   set_colour(cairo, kTextColour);
-  set_font(cairo, 1.1 * layout.font_size, true);
-  cairo_move_to(cairo, layout.margin, layout.margin + 1.1 * layout.font_size);
-  cairo_show_text(cairo, scene.title.c_str());
-  set_font(cairo, layout.font_size);
-  cairo_move_to(cairo, layout.margin, layout.margin + 2.4 * layout.font_size);
-  cairo_show_text(cairo, status_line(frame, marks).c_str());
+  if (layout.header) {
+    put_text(cairo, svg_text, layout.margin, layout.margin + 1.1 * layout.font_size,
+             1.1 * layout.font_size, true, scene.title);
+    put_text(cairo, svg_text, layout.margin, layout.margin + 2.4 * layout.font_size,
+             layout.font_size, false, status_line(frame, marks));
+  }
 
   for (const LegendEntry& entry : place_legend(cairo, scene, layout, layout.legend_top)) {
     const engine::RodShape& shape = scene.species[static_cast<std::size_t>(entry.species)].shape;
@@ -327,10 +419,8 @@ void draw_top_view(cairo_t* cairo, const ViewLayout& layout, const Scene& scene,
     draw_rod(cairo, layout, drawings[static_cast<std::size_t>(entry.species)], centre_mm,
              Eigen::Vector2d::UnitX(), entry.look);
     set_colour(cairo, kTextColour);
-    set_font(cairo, layout.font_size);
-    cairo_move_to(cairo, entry.x + swatch + 0.5 * layout.font_size,
-                  middle_y + 0.35 * layout.font_size);
-    cairo_show_text(cairo, entry.label.c_str());
+    put_text(cairo, svg_text, entry.x + swatch + 0.5 * layout.font_size,
+             middle_y + 0.35 * layout.font_size, layout.font_size, false, entry.label);
   }
 }
 
@@ -349,13 +439,27 @@ void write_svg(const std::filesystem::path& path, const ViewLayout& layout, cons
   const SurfacePtr surface =
       surface_ptr(cairo_svg_surface_create(path.c_str(), layout.width, layout.height));
   check_status(cairo_surface_status(surface.get()), path);
+  std::string text;
   {
     const ContextPtr cairo = context_ptr(cairo_create(surface.get()));
-    draw_top_view(cairo.get(), layout, scene, frame, marks);
+    draw_top_view(cairo.get(), layout, scene, frame, marks, &text);
     check_status(cairo_status(cairo.get()), path);
   }
   cairo_surface_finish(surface.get());
   check_status(cairo_surface_status(surface.get()), path);
+  // Cairo writes text as glyph outlines; the text goes in as <text> elements instead, last so
+  // that it lies over the drawing.
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream svg;
+  svg << in.rdbuf();
+  std::string document = svg.str();
+  const std::size_t end = document.rfind("</svg>");
+  if (!in || end == std::string::npos)
+    throw std::runtime_error("cannot read back " + path.string());
+  document.insert(end, text);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << document;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
 }  // namespace rodsort::render

@@ -33,6 +33,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import sys
 
 RUN_KINDS = ("eta", "population", "dtheta")
@@ -122,6 +123,83 @@ def run_label(path, runs=()):
         parent = os.path.basename(os.path.dirname(os.path.normpath(path)))
         return f"{parent}/{name(path)}"
     return name(path)
+
+
+def species_names(directory):
+    """The species of a run (its scenario.resolved.yaml) or of a sweep (the first of its
+    scenarios/*.yaml), in index order; [] when there is none. The resolved scenario lists them
+    as `species:` items that begin with `- name: ...`."""
+    path = os.path.join(directory, "scenario.resolved.yaml")
+    if not os.path.exists(path):
+        folder = os.path.join(directory, "scenarios")
+        files = sorted(f for f in os.listdir(folder) if f.endswith(".yaml")) \
+            if os.path.isdir(folder) else []
+        if not files:
+            return []
+        path = os.path.join(folder, files[0])
+    names, inside = [], False
+    with open(path, encoding="utf-8") as stream:
+        for line in stream:
+            if not line.startswith(" "):
+                inside = line.startswith("species:")
+                continue
+            match = re.match(r"^  - name: *(\S+)", line)
+            if inside and match:
+                names.append(match.group(1).strip("'\""))
+    return names
+
+
+def scenario_name(run_dir):
+    """The `name:` of a run's resolved scenario, or the directory's name."""
+    path = os.path.join(run_dir, "scenario.resolved.yaml")
+    if os.path.exists(path):
+        with open(path, encoding="utf-8") as stream:
+            for line in stream:
+                match = re.match(r"^name: *(.+)$", line)
+                if match:
+                    return match.group(1).strip().strip("'\"")
+    return run_label(run_dir)
+
+
+# What the swept keys mean, for axes and legends: (name, unit); {s} is the species.
+PHYSICS_NAMES = {
+    "trap.angle": ("trap opening angle θ", "degrees"),
+    "trap.arm_length": ("trap arm length L", "mm"),
+    "box.size": ("cell size", "mm"),
+    "drive.gamma": ("Γ", ""),
+    "drive.frequency": ("drive frequency f", "Hz"),
+    "drive.gap": ("gap between the plates", "mm"),
+    "run.dt": ("time step dt", "s"),
+    "run.duration": ("duration", "s"),
+    "noise.kick_eps": ("collision-kick noise ε{s}", "mm⁻¹"),
+    "noise.white_Dr": ("rotational noise D_r{s}", "rad²/s"),
+    "fraction": ("fraction{s}", ""),
+    "count": ("number of rods N{s}", ""),
+}
+
+
+def physics_name(column, species=(), with_unit=True):
+    """A swept key as a physicist writes it: "species[1].noise.white_Dr" -> "rotational noise D_r
+    of RnT [rad²/s]"; a key not known here is left as it is."""
+    match = re.match(r"^species\[(\d+)\]\.(.+)$", column)
+    key, owner = column, ""
+    if match:
+        index, key = int(match.group(1)), match.group(2)
+        owner = f" of {species[index]}" if index < len(species) else f" of species {index + 1}"
+    if key not in PHYSICS_NAMES:
+        return column
+    name, unit = PHYSICS_NAMES[key]
+    name = name.replace("{s}", owner)
+    return f"{name} [{unit}]" if with_unit and unit else name
+
+
+def physics_value(column, value, species=()):
+    """"ε of A = 0.01 mm⁻¹" for a legend."""
+    match = re.match(r"^species\[\d+\]\.(.+)$", column)
+    key = match.group(1) if match else column
+    unit = PHYSICS_NAMES.get(key, ("", ""))[1]
+    return f"{physics_name(column, species, with_unit=False)} = {value}" + \
+        (f" {unit}" if unit and unit != "degrees" else "°" if unit == "degrees" else "")
 
 
 def wrap_angle(angle):
@@ -234,6 +312,7 @@ class Sweep:
 
     def __init__(self, sweep_dir):
         self.table = Table(os.path.join(sweep_dir, "sweep.csv"))
+        self.species = species_names(sweep_dir)
         table = self.table
         self.angle_column = swept_column(table, "trap.angle")
         if self.angle_column is None:
@@ -297,12 +376,8 @@ class Sweep:
         return key[self.other_columns.index(column)]
 
     def label(self, key):
-        parts = []
-        for column, value in zip(self.other_columns, key):
-            if column == self.eps_column:
-                parts.append(f"ε = {value} mm⁻¹")
-            else:
-                parts.append(f"{column} = {value}")
+        parts = [physics_value(column, value, self.species)
+                 for column, value in zip(self.other_columns, key)]
         return ", ".join(parts) or "all points"
 
     def critical_angles(self):
@@ -326,6 +401,12 @@ def is_number(text):
 
 # ---------------------------------------------------------------------------------------------
 # Plotting
+
+
+def title_single_run(axes, runs):
+    """A plot of one run is titled with its scenario's name."""
+    if len(runs) == 1:
+        axes.set_title(scenario_name(runs[0]), fontsize="medium")
 
 
 def new_figure(plt):
@@ -368,6 +449,7 @@ def plot_eta(plt, runs, out_dir, formats, written):
     axes.set_ylabel("trapping efficiency η")
     axes.set_ylim(bottom=0.0)
     axes.legend(frameon=False, fontsize="small")
+    title_single_run(axes, runs)
     save(plt, figure, out_dir, "eta", formats, written)
 
 
@@ -394,6 +476,7 @@ def plot_population(plt, runs, out_dir, formats, written):
     axes.set_ylabel("rods inside the trap")
     axes.set_ylim(bottom=0.0)
     axes.legend(frameon=False, fontsize="small")
+    title_single_run(axes, runs)
     save(plt, figure, out_dir, "population", formats, written)
 
 
@@ -429,6 +512,7 @@ def plot_dtheta(plt, runs, out_dir, formats, written, tau):
     axes.set_xlabel(f"Δθ over {span_text} s [degrees]")
     axes.set_ylabel("P(Δθ) [1/degree]")
     axes.legend(frameon=False, fontsize="small")
+    title_single_run(axes, runs)
     save(plt, figure, out_dir, "dtheta", formats, written)
 
 
@@ -449,7 +533,7 @@ def plot_eta_theta(plt, sweep, out_dir, formats, written):
                       color=line_colour, marker="o", markersize=4, linewidth=1.2, capsize=2,
                       label=label)
     axes.set_xlabel("trap opening angle θ [degrees]")
-    axes.set_ylabel(f"time-averaged η ({sweep.eta_column})")
+    axes.set_ylabel("η, mean over the last half of each run")
     axes.set_ylim(bottom=0.0)
     axes.legend(frameon=False, fontsize="small")
     save(plt, figure, out_dir, "eta-theta", formats, written)
@@ -478,11 +562,12 @@ def plot_thetac_eps(plt, sweep, out_dir, formats, written):
         theta = [result["angle"] for _, result in points]
         lower = [result["angle"] - result["below"] for _, result in points]
         upper = [result["above"] - result["angle"] for _, result in points]
-        label = ", ".join(f"{c} = {v}" for c, v in zip(family_columns, family)) or None
+        label = ", ".join(physics_value(c, v, sweep.species)
+                          for c, v in zip(family_columns, family)) or None
         axes.errorbar([eps for eps, _ in points], theta, yerr=[lower, upper],
                       color="black" if len(families) == 1 else colour(index), marker="o",
                       markersize=4, capsize=3, linewidth=1.2, label=label)
-    axes.set_xlabel(f"collision-kick noise ε [1/mm] ({sweep.eps_column})")
+    axes.set_xlabel(physics_name(sweep.eps_column, sweep.species))
     axes.set_ylabel("critical angle θc [degrees]")
     if len(families) > 1:
         axes.legend(frameon=False, fontsize="small")
@@ -493,6 +578,7 @@ def plot_measures(plt, sweep_dir, out_dir, formats, written):
     """The plateau means of sweep.csv against the first swept key (other than the seed) whose
     values are numbers; one set of lines per combination of the other swept keys."""
     table = Table(os.path.join(sweep_dir, "sweep.csv"))
+    species = species_names(sweep_dir)
     if not (table.has("point") and table.has("status")):
         raise PlotError(f"{table.path}: no point and status columns; is it rodsort's sweep.csv?")
     swept = table.header[table.header.index("point") + 1:table.header.index("status")]
@@ -532,13 +618,14 @@ def plot_measures(plt, sweep_dir, out_dir, formats, written):
                               if len(v) > 1 else 0.0)
             label = names.get(measure, measure[:-len("_mean")].replace("purity_", "purity of "))
             if group:
-                label += " (" + ", ".join(f"{c} = {v}" for c, v in zip(others, group)) + ")"
+                label += " (" + ", ".join(physics_value(c, v, species)
+                                          for c, v in zip(others, group)) + ")"
             axes.errorbar(xs, means, yerr=errors, color=colour(line), marker="o", markersize=4,
                           linewidth=1.2, capsize=2, label=label)
             line += 1
     if line == 0:
         raise PlotError(f"{table.path}: no complete point to plot")
-    axes.set_xlabel(x_column)
+    axes.set_xlabel(physics_name(x_column, species))
     axes.set_ylabel("mean over the last half of each run")
     axes.axhline(0.0, color="0.6", linewidth=0.8)
     axes.legend(frameon=False, fontsize="small")
@@ -677,6 +764,7 @@ def main(argv):
                         "at a python that has it") from None
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "rodsort"  # identical SVGs for identical data
+    matplotlib.rcParams["svg.fonttype"] = "none"  # text stays text, editable in a paper's figure
     import matplotlib.pyplot as plt
 
     written = []

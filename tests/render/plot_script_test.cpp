@@ -69,8 +69,10 @@ TEST_CASE("The plot script draws eta(t), the trap population and P(dtheta) of a 
   REQUIRE(plotted.exit_status == 0);
   for (const char* name : {"eta", "population", "dtheta"}) {
     check_png(run / "plots" / (std::string(name) + ".png"));
-    CHECK(read_text(run / "plots" / (std::string(name) + ".svg")).find("<svg") !=
-          std::string::npos);
+    const std::string svg = read_text(run / "plots" / (std::string(name) + ".svg"));
+    CHECK(svg.find("<svg") != std::string::npos);
+    // Text stays text (editable in a figure), and a plot of one run is titled with its name.
+    CHECK_THAT(svg, Catch::Contains("<text") && Catch::Contains(run.path().filename().string()));
   }
 }
 
@@ -188,6 +190,10 @@ TEST_CASE("The plot script draws a sweep over noise against its swept key", "[re
   REQUIRE(plotted.exit_status == 0);
   CHECK_THAT(plotted.output, !Catch::Contains("not over trap.angle"));
   check_png(sweep / "plots" / "measures.png");
+  // Axes and legends speak physics, not key paths.
+  const std::string svg = read_text(sweep / "plots" / "measures.svg");
+  CHECK_THAT(svg, Catch::Contains("rotational noise D_r of species 2 [rad²/s]"));
+  CHECK_THAT(svg, !Catch::Contains("species[1].noise.white_Dr"));
   // Asked for eta-theta, it says why not and what to ask for instead.
   const render::ProgramOutput refused =
       render::run_plot_script({sweep.path().string(), "--what", "eta-theta"});

@@ -107,6 +107,30 @@ TEST_CASE("An SVG top view is written", "[render][top_view]") {
   CHECK(svg.find("<svg") != std::string::npos);
   CHECK(svg.find("width=\"" + std::to_string(layout.width)) != std::string::npos);
   CHECK(svg.find("</svg>") != std::string::npos);
+  // The text is text: the title, the legend and the scale bar's length, after the drawing.
+  CHECK_THAT(svg, Catch::Contains(">" + test.scene.title + "</text>"));
+  CHECK_THAT(svg, Catch::Contains(" mm</text>"));
+  CHECK(svg.find("<text") > svg.find("<path"));
+  CHECK(svg.rfind("</text>") < svg.rfind("</svg>"));
+}
+
+TEST_CASE("A top view for a figure leaves out the header; the scale bar is a round length",
+          "[render][top_view]") {
+  const TestScene test;
+  const render::ViewLayout with = render::layout_view(test.scene, {400});
+  render::ViewOptions bare{400};
+  bare.header = false;
+  const render::ViewLayout without = render::layout_view(test.scene, bare);
+  CHECK(without.cell_top < with.cell_top);
+  CHECK(without.height < with.height);
+  const TempDirectory directory;
+  render::write_svg(directory / "bare.svg", without, test.scene, test_frame(test.trap),
+                    test_marks());
+  CHECK_THAT(read_text(directory / "bare.svg"), !Catch::Contains(test.scene.title + "</text>"));
+  CHECK(render::scale_bar_length(86.85) == 10.0);
+  CHECK(render::scale_bar_length(30.0) == 5.0);
+  CHECK(render::scale_bar_length(24.0) == 2.0);
+  CHECK(render::scale_bar_length(1100.0) == 200.0);
 }
 
 TEST_CASE("Writing a top view where no file can be made names the file", "[render][top_view]") {
