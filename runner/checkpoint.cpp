@@ -8,7 +8,7 @@
 
 #include "engine/fingerprint.hpp"
 #include "runner/atomic_file.hpp"
-#include "runner/json_text.hpp"
+#include "scenarios/number_text.hpp"
 
 namespace rodsort::runner {
 namespace {
@@ -63,8 +63,8 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
   for (const auto& [file, bytes] : checkpoint.file_bytes) {
     out << kFileBytesPrefix << file << ' ' << bytes << '\n';
   }
-  out << "wall_s " << json_number(checkpoint.wall_s) << '\n';
-  out << "cpu_s " << json_number(checkpoint.cpu_s) << '\n';
+  out << "wall_s " << scenarios::format_real(checkpoint.wall_s) << '\n';
+  out << "cpu_s " << scenarios::format_real(checkpoint.cpu_s) << '\n';
   out << "sessions " << checkpoint.sessions << '\n';
   out << "started_at " << checkpoint.started_at << '\n';
   out << "metrics_replay_offset " << checkpoint.metrics_replay_offset << '\n';

@@ -1,13 +1,11 @@
 #include "runner/run_record.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <ctime>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "runner/atomic_file.hpp"
-#include "runner/json_text.hpp"
 #include "runner/run_directory.hpp"
 
 namespace rodsort::runner {
@@ -39,59 +37,53 @@ double RunRecord::cpu_per_simulated_second() const {
 }
 
 std::string to_json(const RunRecord& record) {
-  std::string json = "{\n";
-  const auto field = [&json](const char* key, const std::string& value, bool last = false) {
-    json += "  ";
-    json += json_quote(key);
-    json += ": ";
-    json += value;
-    json += last ? "\n" : ",\n";
-  };
-  field("version", json_quote(record.version));
-  field("name", json_quote(record.name));
-  field("seed", std::to_string(record.seed));
-  field("status", json_quote(to_string(record.status)));
-  field("rods", std::to_string(record.rods));
-  field("dt_s", json_number(record.dt_s));
-  field("duration_s", json_number(record.duration_s));
-  field("steps", std::to_string(record.steps));
-  field("total_steps", std::to_string(record.total_steps));
-  field("simulated_s", json_number(record.simulated_s));
-  field("wall_s", json_number(record.wall_s));
-  field("cpu_s", json_number(record.cpu_s));
-  field("cpu_s_per_simulated_s", json_number(record.cpu_per_simulated_second()));
-  field("sessions", std::to_string(record.sessions));
-  field("started_at", json_quote(record.started_at));
-  field("updated_at", json_quote(record.updated_at));
-  field("message", json_quote(record.message), true);
-  json += "}\n";
-  return json;
+  // Keys in the order a person reads them (ordered_json keeps insertion order).
+  nlohmann::ordered_json json;
+  json["version"] = record.version;
+  json["name"] = record.name;
+  json["seed"] = record.seed;
+  json["status"] = to_string(record.status);
+  json["rods"] = record.rods;
+  json["dt_s"] = record.dt_s;
+  json["duration_s"] = record.duration_s;
+  json["steps"] = record.steps;
+  json["total_steps"] = record.total_steps;
+  json["simulated_s"] = record.simulated_s;
+  json["wall_s"] = record.wall_s;
+  json["cpu_s"] = record.cpu_s;
+  json["cpu_s_per_simulated_s"] = record.cpu_per_simulated_second();
+  json["sessions"] = record.sessions;
+  json["started_at"] = record.started_at;
+  json["updated_at"] = record.updated_at;
+  json["message"] = record.message;
+  // Numbers in the shortest text that reads back to the same double; invalid UTF-8 in a message
+  // (from a file name, say) is replaced rather than refused.
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
-RunRecord parse_run_record(const std::string& json) {
+RunRecord parse_run_record(const std::string& text) {
   try {
-    // JSON is a subset of YAML 1.2 as far as this record goes.
-    const YAML::Node root = YAML::Load(json);
-    if (!root.IsMap()) throw std::runtime_error("not a run record: not a JSON object");
+    const nlohmann::json json = nlohmann::json::parse(text);
+    if (!json.is_object()) throw std::runtime_error("not a run record: not a JSON object");
     RunRecord record;
-    record.version = root["version"].as<std::string>();
-    record.name = root["name"].as<std::string>();
-    record.seed = root["seed"].as<std::uint64_t>();
-    record.status = run_status_from_string(root["status"].as<std::string>());
-    record.rods = root["rods"].as<int>();
-    record.dt_s = root["dt_s"].as<double>();
-    record.duration_s = root["duration_s"].as<double>();
-    record.steps = root["steps"].as<std::int64_t>();
-    record.total_steps = root["total_steps"].as<std::int64_t>();
-    record.simulated_s = root["simulated_s"].as<double>();
-    record.wall_s = root["wall_s"].as<double>();
-    record.cpu_s = root["cpu_s"].as<double>();
-    record.sessions = root["sessions"].as<int>();
-    record.started_at = root["started_at"].as<std::string>();
-    record.updated_at = root["updated_at"].as<std::string>();
-    record.message = root["message"].as<std::string>();
+    record.version = json.at("version").get<std::string>();
+    record.name = json.at("name").get<std::string>();
+    record.seed = json.at("seed").get<std::uint64_t>();
+    record.status = run_status_from_string(json.at("status").get<std::string>());
+    record.rods = json.at("rods").get<int>();
+    record.dt_s = json.at("dt_s").get<double>();
+    record.duration_s = json.at("duration_s").get<double>();
+    record.steps = json.at("steps").get<std::int64_t>();
+    record.total_steps = json.at("total_steps").get<std::int64_t>();
+    record.simulated_s = json.at("simulated_s").get<double>();
+    record.wall_s = json.at("wall_s").get<double>();
+    record.cpu_s = json.at("cpu_s").get<double>();
+    record.sessions = json.at("sessions").get<int>();
+    record.started_at = json.at("started_at").get<std::string>();
+    record.updated_at = json.at("updated_at").get<std::string>();
+    record.message = json.at("message").get<std::string>();
     return record;
-  } catch (const YAML::Exception& error) {
+  } catch (const nlohmann::json::exception& error) {
     throw std::runtime_error(std::string("not a run record: ") + error.what());
   }
 }

@@ -15,8 +15,8 @@
 #include "runner/clocks.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
-#include "runner/json_text.hpp"
 #include "runner/progress.hpp"
+#include "scenarios/number_text.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace rodsort::runner {
@@ -28,7 +28,7 @@ constexpr int kLagMaxWindows = 100;
 /// Width of the bins of P(V_x) [mm/s].
 constexpr double kVelocityBin = 0.5;
 
-std::string number(double value) { return json_number(value); }
+std::string number(double value) { return scenarios::format_real(value); }
 
 /// The model of one free rod of species `species`, alone in a periodic cell.
 engine::Model single_rod_model(const engine::Model& scenario_model, int species, double cell,

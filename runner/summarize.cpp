@@ -13,8 +13,8 @@
 #include "runner/atomic_file.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
-#include "runner/json_text.hpp"
 #include "runner/sweep.hpp"
+#include "scenarios/number_text.hpp"
 
 namespace rodsort::runner {
 namespace {
@@ -140,7 +140,7 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
                     critical.above, critical.plateau);
       for (const double value :
            {critical.angle, critical.below, critical.above, critical.plateau}) {
-        row.push_back(std::isnan(value) ? "nan" : json_number(value));
+        row.push_back(std::isnan(value) ? "nan" : scenarios::format_real(value));
       }
       row.push_back(std::to_string(points.size()));
       row.push_back(critical.caution.empty() ? "" : "caution: " + critical.caution);

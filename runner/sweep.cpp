@@ -16,7 +16,6 @@
 #include "runner/exit_code.hpp"
 #include "runner/file_kind.hpp"
 #include "runner/interrupt.hpp"
-#include "runner/json_text.hpp"
 #include "runner/process_pool.hpp"
 #include "runner/progress.hpp"
 #include "runner/run_command.hpp"
@@ -25,6 +24,7 @@
 #include "runner/run_summary.hpp"
 #include "runner/slurm.hpp"
 #include "runner/usable_cpus.hpp"
+#include "scenarios/number_text.hpp"
 #include "scenarios/scenario.hpp"
 #include "scenarios/sweep.hpp"
 
@@ -48,7 +48,9 @@ struct PointPlan {
 };
 
 /// A number for sweep.csv: shortest exact text, "nan" when undefined.
-std::string number_text(double value) { return std::isnan(value) ? "nan" : json_number(value); }
+std::string number_text(double value) {
+  return std::isnan(value) ? "nan" : scenarios::format_real(value);
+}
 
 /// Whether the run in `run_directory` is of the point's scenario but for a shorter run.duration,
 /// and has not gone beyond `duration`: it can be continued to it.
@@ -100,7 +102,7 @@ std::vector<std::string> point_command(const std::filesystem::path& executable,
     std::vector<std::string> argv = {program, "run", "--resume", run_directory.string()};
     if (action == PointAction::kExtend) {
       argv.push_back("--duration");
-      argv.push_back(json_number(point.duration));
+      argv.push_back(scenarios::format_real(point.duration));
     }
     if (any_build) argv.push_back("--any-build");
     return argv;
