@@ -191,6 +191,7 @@ class RunSession {
       if (progress && step % kProgressEverySteps == 0) progress->update(sample());
     }
     if (last_checkpoint_step_ != simulation_.step_count()) write_checkpoint_now();
+    write_end_frame();
     write_record(RunStatus::kComplete, "");
     if (progress) progress->finish(sample());
     const double simulated_s = simulation_.time() - session_start_sim_s_;
@@ -220,6 +221,21 @@ class RunSession {
                                " holds the frames before the breakdown (rodsort render " +
                                directory_.string() + ")");
     }
+  }
+
+  /// A run whose duration is not a whole number of frame (or trajectory) intervals ends with one
+  /// more frame, at its last step, so that a 40 s run ends at t = 40 s. It comes after the final
+  /// checkpoint, which therefore does not count it: a run continued to a longer duration cuts it
+  /// off and goes on exactly as a run started with that duration, which has no frame there.
+  void write_end_frame() {
+    const std::int64_t step = simulation_.step_count();
+    const bool frame_due = !schedule_.is_frame(step);
+    const bool trajectory_due = trajectory_ && !schedule_.is_trajectory(step);
+    if (!frame_due && !trajectory_due) return;
+    const engine::Frame frame = simulation_.frame();
+    if (frame_due) write_frame(frame);
+    if (trajectory_due) trajectory_->append(dump_.format(frame, step));
+    for (AppendFile* file : files()) file->sync();
   }
 
   int stop_on_signal(int signal_number, std::optional<ProgressReporter>& progress) {

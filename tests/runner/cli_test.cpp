@@ -139,11 +139,13 @@ TEST_CASE("a run killed with SIGKILL leaves readable files and resumes", "[runne
   const auto after = rodsort::metrics::read_rods_csv(rods);
   REQUIRE(after.error.empty());
   CHECK(after.warning.empty());
-  // Frames every 350 steps of 1e-4 s up to 6 s: steps 0, 350, ..., 59850, each once.
-  REQUIRE(after.frames.size() == 172);
-  for (std::size_t f = 0; f < after.frames.size(); ++f) {
+  // Frames every 350 steps of 1e-4 s up to 6 s: steps 0, 350, ..., 59850, each once, and the
+  // run's last step, t = 6 s.
+  REQUIRE(after.frames.size() == 173);
+  for (std::size_t f = 0; f + 1 < after.frames.size(); ++f) {
     CHECK(after.frames[f].time == Approx(0.035 * static_cast<double>(f)).margin(1e-9));
   }
+  CHECK(after.frames.back().time == Approx(6.0).margin(1e-9));
   CHECK(read_run_record(run)->status == RunStatus::kComplete);
 
   // And it is the same run as one never stopped.

@@ -10,6 +10,7 @@
 #include "metrics/rods_csv.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/checkpoint.hpp"
+#include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_command.hpp"
 #include "runner/run_directory.hpp"
@@ -349,6 +350,28 @@ TEST_CASE("a complete run continued to a longer duration equals a run of that du
   CHECK(record->duration_s == Approx(0.35));
   CHECK(record->sessions == 2);
   CHECK_THAT(read_file(shorter / kResolvedScenarioFile), Catch::Contains("duration: 0.35"));
+}
+
+TEST_CASE("a run ends with a frame at its end, which a longer continuation leaves out",
+          "[runner][run][resume]") {
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "whole") == kExitOk);
+  // 0.2 s is not a whole number of frames (0.035 s) or trajectory frames (0.07 s).
+  const auto shorter = directory / "shorter";
+  REQUIRE(run_tiny(shorter, silent(), {"run.duration=0.2"}) == kExitOk);
+  const auto frames = rodsort::metrics::read_rods_csv(shorter / kRodsCsvFile);
+  REQUIRE(frames.error.empty());
+  CHECK(frames.frames.size() == 7);  // 0, 0.035, ..., 0.175, and 0.2
+  CHECK(frames.frames.back().time == Approx(0.2).margin(1e-12));
+  const std::string dump = read_file(shorter / kTrajectoryFile);
+  CHECK(dump.substr(dump.rfind("ITEM: TIMESTEP\n")).rfind("ITEM: TIMESTEP\n2000\n", 0) == 0);
+  const CsvTable metrics = read_csv(shorter / kMetricsCsvFile);
+  CHECK(metrics.numbers(*metrics.column("t")).back() == Approx(0.2).margin(1e-12));
+
+  std::ostringstream err;
+  REQUIRE(resume_run_directory(shorter, silent(), err, 0.35) == kExitOk);
+  INFO(err.str());
+  check_same_outputs(directory / "whole", shorter);
 }
 
 TEST_CASE("resuming a directory without a run leaves it as it was", "[runner][run][resume]") {
