@@ -20,6 +20,7 @@
 #include "runner/progress.hpp"
 #include "runner/run_command.hpp"
 #include "runner/run_directory.hpp"
+#include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
 #include "runner/run_summary.hpp"
 #include "runner/slurm.hpp"
@@ -213,15 +214,34 @@ int submit_array(const SweepRequest& request, const scenarios::Sweep& sweep,
   array.directory = std::filesystem::absolute(directory);
   array.set_options = request.set_options;
   array.any_build = request.any_build;
+  if (array.directory.string().find_first_of(" \t\n'\"") != std::string::npos ||
+      array.sweep_file.string().find_first_of(" \t\n'\"") != std::string::npos) {
+    err << "rodsort: --slurm: the sweep file's and the sweep directory's paths must not hold "
+           "spaces or quotes (they go into #SBATCH lines): "
+        << array.sweep_file.string() << ", " << array.directory.string() << '\n';
+    return kExitUsage;
+  }
   CostEstimate total{0.0, 0.0};
+  std::size_t running = 0;
   for (std::size_t p = 0; p < points.size(); ++p) {
     if (points[p].action == PointAction::kSkip) continue;
+    // A point still running (a task of an earlier array) is left to it.
+    if (RunLock::held(directory / points[p].name)) {
+      ++running;
+      continue;
+    }
     array.points.push_back(p);
     total.low_cpu_s += points[p].cost.low_cpu_s;
     total.high_cpu_s += points[p].cost.high_cpu_s;
   }
+  if (running > 0) {
+    out << "rodsort: sweep " << sweep.name << ": " << running
+        << " points are running now and are left to their tasks\n";
+  }
   if (array.points.empty()) {
-    out << "rodsort: sweep " << sweep.name << ": every point is complete; nothing to submit\n";
+    out << "rodsort: sweep " << sweep.name << ": "
+        << (running > 0 ? "no other point to run" : "every point is complete")
+        << "; nothing to submit\n";
     return kExitOk;
   }
   const std::filesystem::path script = directory / "slurm" / "sweep.sbatch";

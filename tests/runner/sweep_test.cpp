@@ -10,6 +10,7 @@
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
+#include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
 #include "runner/slurm.hpp"
 #include "runner/summarize.hpp"
@@ -255,6 +256,16 @@ TEST_CASE("sweep --slurm --no-submit writes a job array of the points still to r
   CHECK_THAT(script, Catch::Contains("exec "));
   // The table lists the points before any has run.
   CHECK(read_csv(sweep / "sweep.csv").rows.size() == 2);
+
+  // A point that a task of an earlier array is running is left to it.
+  std::filesystem::create_directories(sweep / "angle-40");
+  const auto held = RunLock::acquire(sweep / "angle-40");
+  REQUIRE(held);
+  std::ostringstream again;
+  REQUIRE(run_sweep(request, again, err) == kExitOk);
+  CHECK_THAT(again.str(), Catch::Contains("1 points are running now"));
+  CHECK_THAT(again.str(), Catch::Contains("1 of 2 points to run"));
+  CHECK_THAT(read_file(sweep / "slurm" / "sweep.sbatch"), Catch::Contains("#SBATCH --array=1%3\n"));
 }
 
 TEST_CASE("Slurm's array ranges and shell words", "[runner][sweep]") {
