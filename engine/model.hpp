@@ -90,4 +90,9 @@ struct Model {
   double constraint_force_mixing = 0.0;
 };
 
+/// The compliance the scenario key run.contact_solver: exact sets (Model::constraint_force_mixing)
+/// [s/g]: small against every entry of the problem, it keeps rigid contacts along a line
+/// solvable and changes no measured figure (docs/model.md, "An exact contact solve").
+inline constexpr double kExactSolverCompliance = 1.0e-8;
+
 }  // namespace rodsort::engine

@@ -223,6 +223,7 @@ std::string resolved_yaml(const Scenario& scenario) {
   w.key("dt").number(spec.dt.value);
   w.key("solver_iterations").whole(spec.solver_iterations.value);
   w.key("turn_correction").word(spec.turn_correction.value);
+  w.key("contact_solver").word(spec.contact_solver.value);
   w.end_map();
 
   w.key("output").begin_map();

@@ -261,6 +261,7 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
   spec.dt = run.real("dt");
   spec.solver_iterations = run.integer("solver_iterations");
   spec.turn_correction = run.choice("turn_correction");
+  spec.contact_solver = run.choice("contact_solver");
 
   SectionReader output = top.section("output");
   spec.frame_interval = output.real("frame_interval");

@@ -92,6 +92,7 @@ struct ScenarioSpec {
   Sourced<double> dt;        ///< [s]
   Sourced<std::int64_t> solver_iterations;
   Sourced<std::string> turn_correction;  ///< "tenth" or "full"
+  Sourced<std::string> contact_solver;   ///< "sweeps" or "exact"
 
   Sourced<double> frame_interval;                 ///< [s]
   Sourced<double> trajectory_interval;            ///< [s]; 0: none

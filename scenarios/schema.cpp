@@ -168,6 +168,13 @@ std::vector<KeyInfo> scenario_keys() {
        "the white noise turned through the correction so that contacts resist it. `full` halves "
        "the white noise's overlaps and makes rod A's v0 depend less on dt, but changes the RnT "
        "rod's gait at the default dt (docs/model.md, \"Checks while a run goes\")."},
+      {"run.contact_solver", V::choice, "", "sweeps", {}, {"sweeps", "exact"},
+       "How each step's contacts are solved: `sweeps`, Bullet's sequential impulses "
+       "(run.solver_iterations sweeps); `exact`, as one linear complementarity problem by "
+       "Dantzig's algorithm (Bullet's MLCP solver) with a compliance of 1e-8 s/g that keeps "
+       "every problem solvable. Its cost grows as the cube of the contacts solved together: "
+       "for lone rods (rodsort single), to check a result against an exact solve "
+       "(docs/model.md, \"An exact contact solve\")."},
 
       {"output", V::section, "", "", {}, {}, "What the run writes, and how often."},
       {"output.frame_interval", V::real, "s", "0.07", positive(), {},

@@ -51,6 +51,9 @@ void check_same_model(const engine::Model& a, const engine::Model& b) {
   CHECK(a.dt == b.dt);
   CHECK(a.seed == b.seed);
   CHECK(a.solver_iterations == b.solver_iterations);
+  CHECK(a.full_turn_correction == b.full_turn_correction);
+  CHECK(a.exact_contact_solver == b.exact_contact_solver);
+  CHECK(a.constraint_force_mixing == b.constraint_force_mixing);
   REQUIRE(a.species.size() == b.species.size());
   for (std::size_t i = 0; i < a.species.size(); ++i) {
     const engine::Species& s = a.species[i];
@@ -221,7 +224,7 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
       "materials:\n"
       "  steel-wall: {restitution: 0.5}\n"
       "  rod-steel: {friction: 0.2}\n"
-      "run: {duration: 2, dt: 5.0e-5}\n"
+      "run: {duration: 2, dt: 5.0e-5, turn_correction: full, contact_solver: exact}\n"
       "output: {bullet_snapshots: [1, 0.5], frame_interval: 0.05}\n"
       "metrics: {window: 0.1, stationary_threshold: 0.5}\n";
   const Scenario first = load_ok(yaml);
@@ -281,6 +284,24 @@ TEST_CASE("RnT rods with the collision kick at a large dt are warned about", "[s
       "1}}]\n";
   CHECK(load_scenario_text(white, "k.yaml").diagnostics.empty());
   CHECK(load_scenario_text("species: [{name: A, count: 10}]\n", "k.yaml").diagnostics.empty());
+}
+
+TEST_CASE("run.contact_solver: exact solves lone rods exactly and warns for crowds", "[scenario]") {
+  const Scenario sweeps = load_ok("species: [{name: A, count: 1}]\nbox: {size: 30}\n");
+  CHECK_FALSE(sweeps.model.exact_contact_solver);
+  CHECK(sweeps.model.constraint_force_mixing == 0.0);
+  const Scenario exact =
+      load_ok("species: [{name: A, count: 1}]\nbox: {size: 30}\nrun: {contact_solver: exact}\n");
+  CHECK(exact.model.exact_contact_solver);
+  CHECK(exact.model.constraint_force_mixing == engine::kExactSolverCompliance);
+  const LoadResult crowd = load_scenario_text(
+      "species: [{name: A, count: 9}]\nbox: {size: 30}\nrun: {contact_solver: exact}\n", "c.yaml");
+  REQUIRE(crowd.ok());
+  REQUIRE(crowd.diagnostics.size() == 1);
+  CHECK_THAT(crowd.diagnostics[0].to_string(),
+             Catch::Contains("c.yaml:3:23: warning: run.contact_solver: exact solves of 9 rods"));
+  CHECK_THAT(errors_of("run: {contact_solver: dantzig}\n"),
+             Catch::Contains("run.contact_solver: expected sweeps or exact, got dantzig"));
 }
 
 TEST_CASE("a missing file is an error, not an exception", "[scenario]") {
