@@ -1,6 +1,7 @@
 #include "runner/lammps_dump.hpp"
 
 #include <cassert>
+#include <cmath>
 #include <cstdio>
 
 namespace rodsort::runner {
@@ -44,6 +45,38 @@ std::string LammpsDumpFormatter::format(const engine::Frame& frame, std::int64_t
                     r.species + 1, x, y, z, sphere.radius);
       text += line;
     }
+  }
+  return text;
+}
+
+std::string LammpsDumpFormatter::walls(const engine::Model& model) const {
+  if (model.walls.empty()) return "";
+  struct Bead {
+    double x, y, radius;
+    std::size_t wall;
+  };
+  std::vector<Bead> beads;
+  for (std::size_t w = 0; w < model.walls.size(); ++w) {
+    const engine::Wall& wall = model.walls[w];
+    const auto gaps = static_cast<int>(std::ceil(2.0 * wall.half_length / wall.half_thickness));
+    for (int i = 0; i <= gaps; ++i) {
+      const double along = -wall.half_length + 2.0 * wall.half_length * i / gaps;
+      beads.push_back({wall.center_x + along * std::cos(wall.yaw),
+                       wall.center_y + along * std::sin(wall.yaw), wall.half_thickness, w});
+    }
+  }
+  std::string text;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%zu\n"
+                "ITEM: BOX BOUNDS pp pp ff\n%.10g %.10g\n%.10g %.10g\n%.10g %.10g\n"
+                "ITEM: ATOMS id mol type x y z radius\n",
+                beads.size(), 0.0, box_x_, 0.0, box_y_, z_low_, z_high_);
+  text += line;
+  for (std::size_t b = 0; b < beads.size(); ++b) {
+    std::snprintf(line, sizeof line, "%zu %zu 1 %.5f %.5f %.5f %.4f\n", b + 1, beads[b].wall + 1,
+                  beads[b].x, beads[b].y, 0.5 * model.drive.gap, beads[b].radius);
+    text += line;
   }
   return text;
 }

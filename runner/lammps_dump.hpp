@@ -22,6 +22,11 @@ class LammpsDumpFormatter {
   /// id mol type x y z radius. Positions in mm, from the rod's wrapped centre of mass and axis.
   std::string format(const engine::Frame& frame, std::int64_t step) const;
 
+  /// The trap's walls for a viewer, as one snapshot of the same dump format (walls.dump, beside
+  /// trajectory.dump): each wall a row of spheres as thick as the wall along its centre line,
+  /// half a thickness apart, at mid-gap; mol is the wall's number, type 1. Empty without walls.
+  std::string walls(const engine::Model& model) const;
+
  private:
   std::vector<std::vector<engine::Sphere>> species_spheres_;
   std::size_t rod_count_ = 0;

@@ -62,6 +62,9 @@ class RunSession {
     open_files();
     rods_->append(std::string(metrics::kRodsCsvHeader) + "\n");
     metrics_->append(observer_.csv_header() + "\n");
+    if (schedule_.trajectory_steps > 0 && !plan_.model.walls.empty()) {
+      write_file_atomically(directory_ / kWallsDumpFile, dump_.walls(plan_.model));
+    }
     started_at_ = utc_now_iso8601();
     begin_session(false);
     log("rodsort: running %s (%zu rods, %g s simulated) into %s; %s (docs/performance.md)\n",

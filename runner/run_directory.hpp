@@ -11,6 +11,7 @@ inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.yaml";
 inline constexpr const char* kRodsCsvFile = "rods.csv";
 inline constexpr const char* kMetricsCsvFile = "metrics.csv";
 inline constexpr const char* kTrajectoryFile = "trajectory.dump";
+inline constexpr const char* kWallsDumpFile = "walls.dump";  ///< the trap's walls, for viewers
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 inline constexpr const char* kRunRecordFile = "run.json";
 

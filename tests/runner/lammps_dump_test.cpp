@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/units.hpp"
+
 using namespace rodsort;
 using runner::LammpsDumpFormatter;
 
@@ -83,4 +85,21 @@ TEST_CASE("consecutive LAMMPS dump frames concatenate", "[runner][lammps_dump]")
   REQUIRE(lines.size() == 24);
   CHECK(lines[12] == "ITEM: TIMESTEP");
   CHECK(lines[13] == "700");
+}
+
+TEST_CASE("the trap's walls are a dump of spheres along each wall's centre line",
+          "[runner][lammps_dump]") {
+  engine::Model model = two_species_model();
+  model.drive.gap = 1.2;
+  const LammpsDumpFormatter formatter(model, -0.05, 1.25);
+  CHECK(formatter.walls(model).empty());
+  // A wall 4 mm long and 1 mm thick along y, centred at (20, 15): spheres every 0.5 mm.
+  model.walls = {{20.0, 15.0, 2.0, 0.5, rodsort::kPi / 2}};
+  const std::vector<std::string> lines = lines_of(formatter.walls(model));
+  REQUIRE(lines.size() == 9 + 9);
+  CHECK(lines[3] == "9");
+  CHECK(lines[8] == "ITEM: ATOMS id mol type x y z radius");
+  CHECK(lines[9] == "1 1 1 20.00000 13.00000 0.60000 0.5000");
+  CHECK(lines[13] == "5 1 1 20.00000 15.00000 0.60000 0.5000");
+  CHECK(lines[17] == "9 1 1 20.00000 17.00000 0.60000 0.5000");
 }

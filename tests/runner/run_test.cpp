@@ -113,6 +113,11 @@ TEST_CASE("a run writes every file of the run directory", "[runner][run]") {
   CHECK(dump[3] == std::to_string(kRods * kSpheresPerRod));
 
   CHECK(std::filesystem::exists(run / snapshot_file_name(0.07)));
+  // The trap's walls for a viewer: one snapshot of spheres along the two walls.
+  const auto walls = lines_of(run / kWallsDumpFile);
+  REQUIRE(walls.size() > 9);
+  CHECK(walls[8] == "ITEM: ATOMS id mol type x y z radius");
+  CHECK(walls.size() == 9 + std::stoul(walls[3]));
   CHECK(std::filesystem::exists(run / kCheckpointFile));
 
   const auto record = read_run_record(run);
