@@ -20,9 +20,11 @@ Command add_sweep_command(CLI::App& app) {
       ->add_option("-j,--jobs", request->jobs,
                    "Points run at once (default: one per processor this process may use)")
       ->check(CLI::Range(1, 1024));
-  sweep->add_option("--set", request->set_options,
-                    "Override a key of every point, e.g. --set run.duration=600 (points that "
-                    "ran with another run.duration only are continued to the new one); repeatable");
+  sweep
+      ->add_option("--set", request->set_options,
+                   "Override a key of every point, e.g. --set run.duration=600 (points that "
+                   "ran with another run.duration only are continued to the new one); repeatable")
+      ->allow_extra_args(false);
   sweep->add_flag("--force", request->force,
                   "Rerun points whose run directory holds a different scenario");
   sweep->add_flag("--any-build", request->any_build,
@@ -68,6 +70,7 @@ Command add_sweep_command(CLI::App& app) {
       ->add_option("--sbatch", slurm.extra_lines,
                    "A further #SBATCH line for the array script, e.g. --sbatch=--qos=long; "
                    "repeatable")
+      ->allow_extra_args(false)
       ->needs(slurm_flag)
       ->group("Slurm");
   sweep

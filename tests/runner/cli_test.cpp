@@ -194,3 +194,21 @@ TEST_CASE("a warning about the scenario is printed by run, not again by render a
   CHECK_THAT(reanalyzed.err, Catch::Contains("--set metrics.window=0.09: warning") &&
                                  Catch::Contains("over 3 frame intervals (0.10515 s)"));
 }
+
+TEST_CASE("sweep takes --set before its sweep file, and --status without one", "[runner][cli]") {
+  TempDirectory scratch;
+  const std::string sweep = RODSORT_SOURCE_DIR "/tests/runner/data/tiny-sweep.yaml";
+  const auto planned = run_rodsort({"sweep", "--set", "run.duration=0.42", sweep, "--dry-run", "-o",
+                                    (scratch / "sweep").string()},
+                                   scratch.path());
+  INFO(planned.err);
+  CHECK(planned.status == kExitOk);
+  CHECK_THAT(planned.out, Catch::Contains("angle-40: to run (4 rods"));
+  const auto both =
+      run_rodsort({"sweep", sweep, "--status", scratch.path().string()}, scratch.path());
+  CHECK(both.status == kExitUsage);
+  CHECK_THAT(both.err, Catch::Contains("takes no SWEEP"));
+  const auto no_sweep = run_rodsort({"sweep", "--status", scratch.path().string()}, scratch.path());
+  CHECK(no_sweep.status == kExitUsage);
+  CHECK_THAT(no_sweep.err, Catch::Contains("holds no sweep (no sweep.csv)"));
+}
