@@ -67,6 +67,9 @@ std::optional<MetricsRow> MetricsObserver::observe(const engine::Frame& frame) {
       row->efficiency.eta_trap_species.assign(species_count, kNaN);
     }
     row->sorting = sorting_measures(row->counts);
+    if (config_.at_wall) {
+      for (const bool along : inside_flags(frame, config_.at_wall)) row->at_wall += along;
+    }
   }
   recent_.push_back(frame);
   return row;
@@ -83,6 +86,7 @@ std::string MetricsObserver::csv_header() const {
     }
   }
   if (config_.species_names.size() >= 2) header += ",sorting_index";
+  if (config_.at_wall) header += ",n_wall";
   return header;
 }
 
@@ -107,6 +111,7 @@ std::string MetricsObserver::csv_line(const MetricsRow& row) const {
     append(line, row.sorting.purity[s]);
   }
   if (config_.species_names.size() >= 2) append(line, row.sorting.index);
+  if (config_.at_wall) append(line, row.at_wall);
   return line;
 }
 

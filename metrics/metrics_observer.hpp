@@ -25,6 +25,9 @@ struct MetricsConfig {
   std::vector<double> species_area;        ///< projected area a_s of each species [mm^2]
   double trap_area = 0.0;                  ///< A_t [mm^2]; 0 when there is no trap
   InsidePredicate inside;                  ///< empty when there is no trap
+  /// Whether a rod's centre lies along a bounded cell's wall (within a rod's reach of it);
+  /// empty for the periodic cell.
+  InsidePredicate at_wall;
   double window = kDefaultWindow;          ///< tau [s]
   double stationary_speed_threshold = kDefaultStationarySpeed;  ///< [mm/s]
 };
@@ -37,6 +40,7 @@ struct MetricsRow {
   TrappingCounts counts;
   Efficiency efficiency;  ///< NaN everywhere when there is no trap
   Sorting sorting;
+  int at_wall = 0;  ///< rods along a bounded cell's wall; 0 for the periodic cell
 };
 
 class MetricsObserver {
@@ -50,7 +54,8 @@ class MetricsObserver {
   /// The columns of metrics.csv, without a newline:
   /// t,eta,eta_trap,n_rods,n_stationary,n_trap,n_stationary_trap,mean_speed, then for each
   /// species s: n_stationary_s,n_trap_s,n_stationary_trap_s,eta_s,eta_trap_s,fraction_trap_s,
-  /// purity_s, then sorting_index when there are two species or more.
+  /// purity_s, then sorting_index when there are two species or more, then n_wall in a bounded
+  /// cell.
   std::string csv_header() const;
   /// One row in the order of csv_header(), without a newline; undefined values are "nan".
   std::string csv_line(const MetricsRow& row) const;

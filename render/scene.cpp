@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "trap/obstacle.hpp"
-#include "trap/v_trap.hpp"
 
 namespace rodsort::render {
 
@@ -20,11 +19,7 @@ Scene make_scene(const engine::Model& model, const trap::Obstacle* trap, std::st
     ++scene.species[static_cast<std::size_t>(rod.species)].count;
   }
   scene.walls = model.walls;
-  // The Obstacle interface has no outline (the engine and the metrics never need one); the
-  // V-trap's area is its triangle of apex and arm ends.
-  if (const auto* v_trap = dynamic_cast<const trap::VTrap*>(trap)) {
-    scene.trap_area = {v_trap->apex(), v_trap->arm_end_left(), v_trap->arm_end_right()};
-  }
+  if (trap != nullptr) scene.trap_area = trap->outline();
   return scene;
 }
 

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "trap/cell_wall.hpp"
 #include "trap/obstacle.hpp"
 
 namespace rodsort::runner {
@@ -16,6 +17,16 @@ metrics::MetricsConfig metrics_config(const scenarios::Scenario& scenario) {
   if (scenario.trap) {
     std::shared_ptr<const trap::Obstacle> trap = scenario.trap;
     config.inside = [trap](const Eigen::Vector2d& point) { return trap->contains(point); };
+  }
+  if (scenario.cell) {
+    // Within a rod's reach (its centre to its farthest tip) of the wall: touching it, or about to.
+    std::vector<engine::RodShape> shapes;
+    for (const engine::Species& species : scenario.model.species) shapes.push_back(species.shape);
+    const double reach = trap::required_margin(shapes);
+    std::shared_ptr<const trap::CellWall> cell = scenario.cell;
+    config.at_wall = [cell, reach](const Eigen::Vector2d& point) {
+      return cell->distance_to_wall(point) <= reach;
+    };
   }
   config.window = scenario.metrics.window;
   config.stationary_speed_threshold = scenario.metrics.stationary_threshold;

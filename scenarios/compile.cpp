@@ -9,6 +9,7 @@
 #include "scenarios/number_text.hpp"
 #include "scenarios/placement.hpp"
 #include "scenarios/plausibility.hpp"
+#include "trap/cell_wall.hpp"
 #include "trap/v_trap.hpp"
 
 namespace rodsort::scenarios {
@@ -172,7 +173,7 @@ struct Counts {
 };
 
 Counts count_rods(const ScenarioSpec& spec, const std::vector<engine::RodShape>& shapes,
-                  double trap_area, Diagnostics& diagnostics) {
+                  double trap_area, double cell_area, Diagnostics& diagnostics) {
   Counts counts;
   counts.per_species.assign(spec.species.size(), 0);
   double auto_area = 0.0;  // total projected area of the species counted auto [mm^2]
@@ -189,7 +190,7 @@ Counts count_rods(const ScenarioSpec& spec, const std::vector<engine::RodShape>&
   }
   if (!first_auto) return counts;
   if (spec.area_fraction) {
-    auto_area = spec.area_fraction->value * spec.box_size.value[0] * spec.box_size.value[1];
+    auto_area = spec.area_fraction->value * cell_area;
   } else if (spec.trap) {
     auto_area = spec.trap_area_ratio.value * trap_area;
   } else {
@@ -224,8 +225,9 @@ PlacementRegion region_of(const std::string& word) {
 
 /// Refuses more rods than random placement can fit in a region.
 void check_crowding(const ScenarioSpec& spec, const std::vector<engine::RodShape>& shapes,
-                    const std::vector<int>& counts, double trap_area, Diagnostics& diagnostics) {
-  const double box_area = spec.box_size.value[0] * spec.box_size.value[1];
+                    const std::vector<int>& counts, double trap_area, double cell_area,
+                    Diagnostics& diagnostics) {
+  const double box_area = cell_area;
   struct Region {
     PlacementRegion region;
     const char* description;
@@ -257,6 +259,69 @@ void check_crowding(const ScenarioSpec& spec, const std::vector<engine::RodShape
                           " mm^2), more than random placement can fit (" +
                           percent(kMaxPlacementFraction) + "); use fewer rods or a larger cell");
   }
+}
+
+/// The wall of a bounded cell, centred in the box, which it sizes when box.size is not given;
+/// nothing for the periodic cell or a cell in error.
+std::optional<trap::CellWall> build_cell(const ScenarioSpec& spec,
+                                         const std::vector<engine::RodShape>& shapes,
+                                         engine::Model& model, Diagnostics& diagnostics) {
+  const std::string& shape = spec.cell_shape.value;
+  const auto only_for = [&](const auto& key, bool applies, const char* shapes_it_is_for) {
+    if (key.given && !applies) {
+      diagnostics.error(
+          key.where, key.path,
+          std::string("is only for ") + shapes_it_is_for + ", but cell.shape is " + shape);
+    }
+  };
+  const bool bounded = shape != "periodic";
+  only_for(spec.cell_diameter, bounded, "a bounded cell (cell.shape: circle or flower)");
+  only_for(spec.cell_wall_thickness, bounded, "a bounded cell (cell.shape: circle or flower)");
+  only_for(spec.cell_petals, bounded, "a flower wall (cell.shape: flower)");
+  only_for(spec.cell_petal_depth, bounded, "a flower wall (cell.shape: flower)");
+  if (!bounded) return std::nullopt;
+  // A circle ignores the petals, with a warning only: a sweep may compare both shapes.
+  const auto ignored_by_circle = [&](const auto& key) {
+    if (key.given && shape == "circle") {
+      diagnostics.warning(key.where, key.path,
+                          "ignored: it is only for a flower wall, and cell.shape is circle");
+    }
+  };
+  ignored_by_circle(spec.cell_petals);
+  ignored_by_circle(spec.cell_petal_depth);
+
+  const double diameter = spec.cell_diameter.value;
+  const double thickness = spec.cell_wall_thickness.value;
+  const int petals = static_cast<int>(spec.cell_petals.value);
+  bool ok = true;
+  if (shape == "flower") {
+    const double deepest = trap::CellWall::max_petal_depth(diameter, petals);
+    if (spec.cell_petal_depth.value > deepest) {
+      diagnostics.error(
+          spec.cell_petal_depth.where, spec.cell_petal_depth.path,
+          "must be at most " + format_real(std::floor(deepest * 1000.0) / 1000.0) +
+              " mm, where the cusps of " + std::to_string(petals) + " petals on a " +
+              format_real(diameter) + " mm cell turn the wall by a right angle, got " +
+              format_real(spec.cell_petal_depth.value) + "; fewer petals can be deeper");
+      ok = false;
+    }
+  }
+  const double side = trap::enclosing_box(diameter, thickness, trap::required_margin(shapes));
+  if (!spec.box_size.given) {
+    model.box_x = model.box_y = side;
+  } else if (model.box_x < side || model.box_y < side) {
+    diagnostics.error(spec.box_size.where, spec.box_size.path,
+                      "must be at least " + format_real(side) + " mm on each side to hold the " +
+                          shape + " cell of " + format_real(diameter) +
+                          " mm with its wall clear of the periodic edges by a rod's reach, got [" +
+                          format_real(model.box_x) + ", " + format_real(model.box_y) +
+                          "]; leave box out to get that size");
+    ok = false;
+  }
+  if (!ok) return std::nullopt;
+  const Eigen::Vector2d centre(model.box_x / 2.0, model.box_y / 2.0);
+  if (shape == "circle") return trap::CellWall::circle(centre, diameter, thickness);
+  return trap::CellWall::flower(centre, diameter, petals, spec.cell_petal_depth.value, thickness);
 }
 
 }  // namespace
@@ -346,6 +411,13 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   check_roughness(spec, model, diagnostics);
   check_step_travel(spec, model, diagnostics);
 
+  if (const auto cell = build_cell(spec, shapes, model, diagnostics)) {
+    scenario.cell = std::make_shared<trap::CellWall>(*cell);
+    scenario.cell_area = cell->area();
+  } else {
+    scenario.cell_area = model.box_x * model.box_y;
+  }
+
   std::optional<trap::VTrap> v_trap;
   if (spec.trap) {
     const TrapSpec& t = *spec.trap;
@@ -355,13 +427,23 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
                                   t.wall_thickness.value, direction)
                     : trap::centered_v_trap(model.box_x, model.box_y, angle, t.arm_length.value,
                                             t.wall_thickness.value, direction);
-    if (const auto why =
-            v_trap->fit_error(model.box_x, model.box_y, trap::required_margin(shapes))) {
+    if (scenario.cell) {
+      double longest = 0.0;
+      for (const engine::RodShape& shape : shapes) longest = std::max(longest, shape.length);
+      if (const auto why = scenario.cell->enclosure_error(*v_trap, longest)) {
+        diagnostics.error(t.where, "trap", *why);
+      }
+    } else if (const auto why =
+                   v_trap->fit_error(model.box_x, model.box_y, trap::required_margin(shapes))) {
       diagnostics.error(t.where, "trap", *why);
     }
     scenario.trap = std::make_shared<trap::VTrap>(*v_trap);
     scenario.trap_area = v_trap->area();
     model.walls = v_trap->walls();
+  }
+  if (scenario.cell) {
+    const std::vector<engine::Wall> cell_walls = scenario.cell->walls();
+    model.walls.insert(model.walls.end(), cell_walls.begin(), cell_walls.end());
   }
 
   for (const SpeciesSpec& species : spec.species) {
@@ -375,14 +457,16 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
     }
   }
 
-  const Counts counts = count_rods(spec, shapes, scenario.trap_area, diagnostics);
+  const Counts counts =
+      count_rods(spec, shapes, scenario.trap_area, scenario.cell_area, diagnostics);
   if (counts.ok) {
     std::int64_t total = 0;  // up to 64 species of up to 1e6 rods each
     for (const int count : counts.per_species) total += count;
     if (total == 0) {
       diagnostics.error(spec.species_where, "species", "the scenario has no rods");
     }
-    check_crowding(spec, shapes, counts.per_species, scenario.trap_area, diagnostics);
+    check_crowding(spec, shapes, counts.per_species, scenario.trap_area, scenario.cell_area,
+                   diagnostics);
   }
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     scenario.species.push_back(
@@ -465,8 +549,12 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
     placement.heading.angle = degrees_to_radians(heading.number);
     placements.push_back(placement);
   }
-  PlacementCell cell{model.box_x, model.box_y, model.walls, scenario.trap.get(),
-                     v_trap ? std::optional<Eigen::Vector2d>(v_trap->apex()) : std::nullopt};
+  PlacementCell cell{model.box_x,
+                     model.box_y,
+                     model.walls,
+                     scenario.trap.get(),
+                     v_trap ? std::optional<Eigen::Vector2d>(v_trap->apex()) : std::nullopt,
+                     scenario.cell.get()};
   PlacementResult placed = place_rods(cell, placements, model.seed);
   if (placed.failure) {
     const SpeciesSpec& species = spec.species[static_cast<std::size_t>(placed.failure->species)];

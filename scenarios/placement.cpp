@@ -175,6 +175,7 @@ PlacementResult place_rods(const PlacementCell& cell, const std::vector<SpeciesP
       } else {
         p = {uniform_in(0.0, cell.box_x), uniform_in(0.0, cell.box_y)};
       }
+      if (cell.boundary != nullptr && !cell.boundary->contains(p)) continue;
       const bool in_trap = cell.trap != nullptr && cell.trap->contains(p);
       if (region == PlacementRegion::anywhere ||
           (region == PlacementRegion::inside_trap) == in_trap) {

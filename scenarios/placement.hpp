@@ -49,6 +49,9 @@ struct PlacementCell {
   std::vector<engine::Wall> walls;       ///< rods must not overlap these
   const trap::Obstacle* trap = nullptr;  ///< for the inside/outside regions; may be null
   std::optional<Eigen::Vector2d> apex;   ///< for headings toward the apex [mm]
+  /// A bounded cell's wall: centres are drawn inside it (a rod across it overlaps its walls,
+  /// which are among `walls`); null for the periodic cell.
+  const trap::Obstacle* boundary = nullptr;
 };
 
 struct PlacementFailure {

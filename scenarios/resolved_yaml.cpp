@@ -144,6 +144,7 @@ void write_derived(Writer& w, const Scenario& scenario) {
   w.key("steps_per_drive_period").number(1.0 / (model.drive.frequency * model.dt));
   w.key("steps").whole(scenario.run.steps);
   if (scenario.trap) w.key("trap_area").number(scenario.trap_area);
+  if (scenario.cell) w.key("cell_area").number(scenario.cell_area);
   double rod_area = 0.0;
   w.key("species").begin_list();
   for (std::size_t i = 0; i < scenario.species.size(); ++i) {
@@ -160,7 +161,7 @@ void write_derived(Writer& w, const Scenario& scenario) {
   }
   w.end_list();
   w.key("rods").whole(static_cast<std::int64_t>(model.rods.size()));
-  w.key("area_fraction").number(rod_area / (model.box_x * model.box_y));
+  w.key("area_fraction").number(rod_area / scenario.cell_area);
   w.end_map();
 }
 
@@ -172,7 +173,19 @@ std::string resolved_yaml(const Scenario& scenario) {
   w.begin_map();
   w.key("name").word(spec.name.value);
   w.key("seed").whole(spec.seed.value);
-  w.key("box").begin_map().key("size").pair(spec.box_size.value).end_map();
+  const engine::Model& model = scenario.model;
+  w.key("box").begin_map().key("size").pair({model.box_x, model.box_y}).end_map();
+  w.key("cell").begin_map();
+  w.key("shape").word(spec.cell_shape.value);
+  if (scenario.cell) {
+    w.key("diameter").number(spec.cell_diameter.value);
+    if (spec.cell_shape.value == "flower") {
+      w.key("petals").whole(spec.cell_petals.value);
+      w.key("petal_depth").number(spec.cell_petal_depth.value);
+    }
+    w.key("wall_thickness").number(spec.cell_wall_thickness.value);
+  }
+  w.end_map();
 
   w.key("drive").begin_map();
   w.key("frequency").number(spec.frequency.value);

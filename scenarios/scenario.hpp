@@ -21,6 +21,7 @@
 
 namespace rodsort::trap {
 class Obstacle;
+class CellWall;
 }
 
 namespace rodsort::scenarios {
@@ -60,6 +61,9 @@ struct Scenario {
   engine::Model model;           ///< everything the engine needs, initial rods included
   std::shared_ptr<const trap::Obstacle> trap;  ///< nullptr for `trap: none`
   double trap_area = 0.0;                      ///< A_t [mm^2]; 0 without a trap
+  /// The wall closing a bounded cell; nullptr for the periodic cell (`cell.shape: periodic`).
+  std::shared_ptr<const trap::CellWall> cell;
+  double cell_area = 0.0;  ///< where the rods move: the box, or inside the cell's wall [mm^2]
   std::vector<SpeciesDerived> species;         ///< parallel to model.species
   RunSettings run{};
   OutputSettings output{};

@@ -215,6 +215,12 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
   if (!spec.name.given) spec.name.value = default_name;
   spec.seed = top.integer("seed");
   spec.box_size = top.section("box").real_pair("size");
+  SectionReader cell = top.section("cell");
+  spec.cell_shape = cell.choice("shape");
+  spec.cell_diameter = cell.real("diameter");
+  spec.cell_petals = cell.integer("petals");
+  spec.cell_petal_depth = cell.real("petal_depth");
+  spec.cell_wall_thickness = cell.real("wall_thickness");
 
   SectionReader drive = top.section("drive");
   spec.frequency = drive.real("frequency");

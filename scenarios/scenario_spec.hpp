@@ -71,6 +71,11 @@ struct ScenarioSpec {
   Sourced<std::string> name;
   Sourced<std::int64_t> seed;
   Sourced<std::array<double, 2>> box_size;  ///< [mm]
+  Sourced<std::string> cell_shape;          ///< "periodic", "circle" or "flower"
+  Sourced<double> cell_diameter;            ///< [mm]
+  Sourced<std::int64_t> cell_petals;
+  Sourced<double> cell_petal_depth;     ///< [mm]
+  Sourced<double> cell_wall_thickness;  ///< [mm]
 
   Sourced<double> frequency;  ///< [Hz]
   /// Exactly one of gamma and amplitude is set (gamma = 7 when neither was written).

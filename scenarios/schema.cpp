@@ -30,11 +30,34 @@ std::vector<KeyInfo> scenario_keys() {
       {"seed", V::integer, "", "1", closed(0, 9.0e18), {},
        "Seed of every random stream: initial placement, collision kicks, white noise."},
 
-      {"box", V::section, "", "", {}, {}, "The periodic cell."},
+      {"box", V::section, "", "", {}, {},
+       "The periodic cell, or the box around a bounded one (cell.shape)."},
       {"box.size", V::real_pair, "mm", "[86.85, 86.85]", half_open(0, 1.0e6), {},
        "Sides of the cell in x and y, periodic in both; one number for a square. Paper: 19.3 rod "
        "lengths. At most 1e6 mm, where doubles still resolve a position to 1e-10 mm, a "
-       "ten-millionth of a rod's travel in one step."},
+       "ten-millionth of a rod's travel in one step.",
+       "[86.85, 86.85]; around a bounded cell, the smallest square that holds it"},
+
+      {"cell", V::section, "", "", {}, {},
+       "What bounds the rods: the periodic box (the paper's simulations), or a wall closing a "
+       "disc (its experiments' cell, 13 cm across with a flower-shaped wall)."},
+      {"cell.shape", V::choice, "", "periodic", {}, {"periodic", "circle", "flower"},
+       "`periodic`: the box, periodic in x and y. `circle`: a circular wall of cell.diameter. "
+       "`flower`: a wall of cell.petals circular scallops bulging outward, which turns rods "
+       "sliding along it back into the bulk at the cusps. The box then defaults to the "
+       "smallest square that holds the wall clear of its periodic edges by a rod's reach, and "
+       "the trap is centred in the cell."},
+      {"cell.diameter", V::real, "mm", "130", half_open(0, 1.0e5), {},
+       "Inner diameter of a circular wall, or of the circle through a flower's petal tips. "
+       "Paper's experiments: 13 cm."},
+      {"cell.petals", V::integer, "", "16", closed(3, 10000), {},
+       "Number of scallops of a flower wall; the paper does not give it."},
+      {"cell.petal_depth", V::real, "mm", "5", positive(), {},
+       "Radial depth of a flower's scallops, from the cusps out to the petal tips; at most the "
+       "depth at which the cusps turn the wall by a right angle (5.1 mm for 16 petals on "
+       "130 mm, 9.9 for 8). The paper does not give it."},
+      {"cell.wall_thickness", V::real, "mm", "1", positive(), {},
+       "Thickness of the cell's wall, which lies outside the disc."},
 
       {"drive", V::section, "", "", {}, {}, "Vertical vibration of base and lid."},
       {"drive.frequency", V::real, "Hz", "200", half_open(0, 5.0e5), {},

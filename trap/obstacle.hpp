@@ -35,6 +35,8 @@ class Obstacle {
   /// Whether a point of the plane lies in the enclosed area. Points are taken as given: pass
   /// positions wrapped into the cell, which is where an obstacle that passed fit_error() lies.
   virtual bool contains(const Eigen::Vector2d& point) const = 0;
+  /// The boundary of the enclosed area, counter-clockwise, for drawing it [mm].
+  virtual std::vector<Eigen::Vector2d> outline() const = 0;
   /// Short description for messages, e.g. "trap of arm 45 mm at 120°".
   virtual std::string describe() const = 0;
 

@@ -73,6 +73,10 @@ bool VTrap::contains(const Eigen::Vector2d& point) const {
          cross(right - left, relative - left) <= 0.0;
 }
 
+std::vector<Eigen::Vector2d> VTrap::outline() const {
+  return {apex_, arm_end_right(), arm_end_left()};
+}
+
 std::string VTrap::describe() const {
   char text[96];
   std::snprintf(text, sizeof text, "trap of arm %s mm at %.4g°", format_mm(arm_length_).c_str(),

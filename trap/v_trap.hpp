@@ -53,6 +53,8 @@ class VTrap final : public Obstacle {
   double area() const override;
   /// Inside the closed triangle of the apex and the two arm ends.
   bool contains(const Eigen::Vector2d& point) const override;
+  /// The triangle: apex, right arm end, left arm end.
+  std::vector<Eigen::Vector2d> outline() const override;
   std::string describe() const override;
   /// Obstacle::fit_error(), plus a hint when a bisector along the cell's diagonal would fit.
   std::optional<std::string> fit_error(double box_x, double box_y, double margin) const override;

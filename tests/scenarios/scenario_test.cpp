@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/units.hpp"
+#include "trap/cell_wall.hpp"
 #include "trap/obstacle.hpp"
 
 using namespace rodsort;
@@ -336,4 +337,58 @@ TEST_CASE("what is not a regular file of bounded size is refused without reading
   }
   CHECK_THAT(message_of(large), Catch::Contains("large.yaml: larger than 16 MB"));
   std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("a bounded cell: the box around it, rods inside, its walls after the trap's",
+          "[scenario][cell]") {
+  const std::string yaml =
+      "cell: {shape: flower, diameter: 80, petals: 12, petal_depth: 4}\n"
+      "trap: {angle: 90, arm_length: 30}\n"
+      "species: [{name: A, count: 100}]\n";
+  const Scenario scenario = load_ok(yaml);
+  REQUIRE(scenario.cell);
+  const engine::Model& model = scenario.model;
+  // 80 mm, two 1 mm walls and a rod's reach (2.6 mm) on each side, rounded up to a whole mm.
+  CHECK(model.box_x == 88.0);
+  CHECK(model.box_y == 88.0);
+  CHECK(scenario.cell->centre() == Eigen::Vector2d(44.0, 44.0));
+  CHECK(model.walls.size() == scenario.trap->walls().size() + scenario.cell->walls().size());
+  CHECK(model.walls.front().center_x == scenario.trap->walls().front().center_x);
+  CHECK(scenario.cell_area == Approx(scenario.cell->area()));
+  REQUIRE(model.rods.size() == 100);
+  for (const engine::RodInit& rod : model.rods) {
+    CHECK(scenario.cell->contains({rod.x, rod.y}));
+  }
+  // The trap is centred in the cell: its apex and the middle of its opening lie on either side.
+  const auto triangle = scenario.trap->outline();
+  const Eigen::Vector2d middle =
+      0.5 * (triangle[0] + 0.5 * (triangle[1] + triangle[2])) - scenario.cell->centre();
+  CHECK(middle.norm() < 1e-9);
+
+  const std::string resolved = resolved_yaml(scenario);
+  INFO(resolved);
+  CHECK_THAT(resolved, Catch::Contains("cell:\n  shape: flower\n  diameter: 80\n  petals: 12\n"
+                                       "  petal_depth: 4\n  wall_thickness: 1\n"));
+  const Scenario second = load_ok(resolved);
+  check_same_model(model, second.model);
+  CHECK(resolved_yaml(second) == resolved);
+
+  // count: auto and area_fraction take the area inside the wall, not the box's.
+  const Scenario by_fraction = load_ok(
+      "cell: {shape: circle, diameter: 60}\ntrap: none\npopulation: {area_fraction: 0.1}\n");
+  CHECK(by_fraction.cell_area == Approx(kPi * 30.0 * 30.0).epsilon(1e-3));
+  CHECK(static_cast<double>(by_fraction.model.rods.size()) ==
+        Approx(0.1 * by_fraction.cell_area / by_fraction.species[0].projected_area).margin(0.5));
+}
+
+TEST_CASE("a circle warns about a flower's keys, which a sweep over the shape may leave",
+          "[scenario][cell]") {
+  const LoadResult result =
+      load_scenario_text("cell: {shape: circle, petals: 10}\ntrap: {angle: 100}\n", "test.yaml");
+  REQUIRE(result.ok());
+  CHECK_THAT(format_diagnostics(result.diagnostics),
+             Catch::Contains("cell.petals: ignored: it is only for a flower wall"));
+  CHECK(result.scenario->cell->petals() == 0);
+  CHECK_THAT(errors_of("cell: {shape: circle, diameter: 30}\ntrap: {angle: 100}\n"),
+             Catch::Contains("reaches outside the circular cell 30 mm across"));
 }
