@@ -55,7 +55,7 @@ class RunSession {
         observer_(plan.metrics),
         // The base's top surface moves within [-A, A] and the lid's bottom within w + [-A, A].
         dump_(plan.model, -plan.model.drive.amplitude,
-              plan.model.drive.gap + plan.model.drive.amplitude) {}
+              plan.model.drive.gap + plan.model.drive.amplitude, plan.dump_style) {}
 
   int start() {
     write_file_atomically(directory_ / kResolvedScenarioFile, plan_.resolved_yaml);

@@ -49,6 +49,7 @@ RunPlan make_run_plan(const scenarios::Scenario& scenario) {
   }
   plan.metrics = metrics_config(scenario);
   plan.resolved_yaml = scenarios::resolved_yaml(scenario);
+  plan.dump_style = scenario.output.trajectory_named ? DumpStyle::named : DumpStyle::plain;
   return plan;
 }
 

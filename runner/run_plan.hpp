@@ -7,6 +7,7 @@
 
 #include "engine/model.hpp"
 #include "metrics/metrics_observer.hpp"
+#include "runner/lammps_dump.hpp"
 #include "runner/run_schedule.hpp"
 #include "scenarios/scenario.hpp"
 
@@ -20,6 +21,7 @@ struct RunPlan {
   RunSchedule schedule;
   metrics::MetricsConfig metrics;  ///< its inside test holds the trap
   std::string resolved_yaml;       ///< scenario.resolved.yaml's text
+  DumpStyle dump_style = DumpStyle::plain;  ///< of trajectory.dump and walls.dump
 };
 
 RunPlan make_run_plan(const scenarios::Scenario& scenario);

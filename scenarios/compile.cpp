@@ -480,6 +480,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   output.frame_interval = spec.frame_interval.value;
   output.frame_steps = to_steps(spec.frame_interval, dt, diagnostics);
   output.trajectory_interval = spec.trajectory_interval.value;
+  output.trajectory_named = spec.trajectory_style.value == "named";
   output.trajectory_steps =
       output.trajectory_interval > 0.0 ? to_steps(spec.trajectory_interval, dt, diagnostics) : 0;
   output.checkpoint_interval = spec.checkpoint_interval.value;

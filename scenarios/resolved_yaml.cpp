@@ -242,6 +242,7 @@ std::string resolved_yaml(const Scenario& scenario) {
   w.key("output").begin_map();
   w.key("frame_interval").number(spec.frame_interval.value);
   w.key("trajectory_interval").number(spec.trajectory_interval.value);
+  w.key("trajectory_style").word(spec.trajectory_style.value);
   w.key("bullet_snapshots").numbers(spec.bullet_snapshots.value);
   w.key("checkpoint_interval").number(spec.checkpoint_interval.value);
   w.end_map();

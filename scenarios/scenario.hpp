@@ -35,6 +35,7 @@ struct OutputSettings {
   double frame_interval;                 ///< between rows of rods.csv [s]
   std::int64_t frame_steps;              ///< the same in steps (>= 1)
   double trajectory_interval;            ///< between frames of the sphere trajectory [s]; 0: none
+  bool trajectory_named = false;         ///< output.trajectory_style: named (species names, TIME)
   std::int64_t trajectory_steps;         ///< the same in steps; 0: none
   std::vector<double> bullet_snapshots;  ///< times of .bullet snapshots [s], sorted
   std::vector<std::int64_t> snapshot_steps;  ///< the same in steps

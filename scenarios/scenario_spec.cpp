@@ -272,6 +272,7 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
   SectionReader output = top.section("output");
   spec.frame_interval = output.real("frame_interval");
   spec.trajectory_interval = output.real("trajectory_interval");
+  spec.trajectory_style = output.choice("trajectory_style");
   spec.bullet_snapshots = output.real_list("bullet_snapshots");
   spec.checkpoint_interval = output.real("checkpoint_interval");
 

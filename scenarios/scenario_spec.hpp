@@ -101,6 +101,7 @@ struct ScenarioSpec {
 
   Sourced<double> frame_interval;                 ///< [s]
   Sourced<double> trajectory_interval;            ///< [s]; 0: none
+  Sourced<std::string> trajectory_style;          ///< "plain" or "named"
   Sourced<std::vector<double>> bullet_snapshots;  ///< [s]
   Sourced<double> checkpoint_interval;            ///< [s]
 

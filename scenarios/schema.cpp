@@ -204,6 +204,12 @@ std::vector<KeyInfo> scenario_keys() {
        "Interval between frames in rods.csv (the paper's camera: 0.07 s); a multiple of dt."},
       {"output.trajectory_interval", V::real, "s", "0.7", non_negative(), {},
        "Interval between frames of the sphere trajectory for OVITO/VMD; 0 for none."},
+      {"output.trajectory_style", V::choice, "", "plain", {}, {"plain", "named"},
+       "trajectory.dump's flavour of the LAMMPS dump: `plain`, types numbered 1, 2, ... in "
+       "species order, which every reader takes (OVITO, VMD, ASE, MDAnalysis); `named`, as "
+       "LAMMPS writes with `dump_modify time yes types labels`: the species' names as types (OVITO "
+       "lists A and RnT) and the simulated time in an ITEM: TIME block, which ASE and "
+       "MDAnalysis cannot read."},
       {"output.bullet_snapshots", V::real_list, "s", "[]", non_negative(), {},
        "Simulated times at which to write .bullet snapshots of the world."},
       {"output.checkpoint_interval", V::real, "s", "10", positive(), {},

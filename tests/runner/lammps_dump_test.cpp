@@ -103,3 +103,41 @@ TEST_CASE("the trap's walls are a dump of spheres along each wall's centre line"
   CHECK(lines[13] == "5 1 1 20.00000 15.00000 0.60000 0.5000");
   CHECK(lines[17] == "9 1 1 20.00000 17.00000 0.60000 0.5000");
 }
+
+TEST_CASE("a named LAMMPS dump gives the time and the species' names, as LAMMPS's type labels",
+          "[runner][lammps_dump]") {
+  engine::Model model = two_species_model();
+  model.species[0].name = "A";
+  model.species[1].name = "RnT";
+  const LammpsDumpFormatter formatter(model, -0.05, 1.25, runner::DumpStyle::named);
+  engine::Frame frame;
+  frame.time = 0.35;
+  frame.rods = {rod_frame(0, {10.0, 12.0}, 0.6, {0.0, 1.0, 0.0}),
+                rod_frame(1, {39.9, 0.2}, 0.45, {1.0, 0.0, 0.0})};
+  const std::vector<std::string> lines = lines_of(formatter.format(frame, 3500));
+  const std::vector<std::string> expected = {
+      "ITEM: TIME",
+      "0.35",
+      "ITEM: TIMESTEP",
+      "3500",
+      "ITEM: NUMBER OF ATOMS",
+      "3",
+      "ITEM: BOX BOUNDS pp pp ff",
+      "0 40",
+      "0 30",
+      "-0.05 1.25",
+      "ITEM: ATOMS id mol type x y z radius",
+      "1 1 A 10.00000 11.00000 0.60000 0.5000",
+      "2 1 A 10.00000 13.00000 0.60000 0.2500",
+      "3 2 RnT 39.90000 0.20000 0.45000 0.4000",
+  };
+  CHECK(lines == expected);
+
+  model.drive.gap = 1.2;
+  model.walls = {{20.0, 15.0, 2.0, 0.5, rodsort::kPi / 2}};
+  const std::vector<std::string> walls = lines_of(formatter.walls(model));
+  REQUIRE(walls.size() == 11 + 9);
+  CHECK(walls[0] == "ITEM: TIME");
+  CHECK(walls[1] == "0");
+  CHECK(walls[11] == "1 1 wall 20.00000 13.00000 0.60000 0.5000");
+}
