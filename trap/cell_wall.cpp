@@ -32,13 +32,6 @@ void append_arc(std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& cen
   }
 }
 
-double segment_point_distance(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                              const Eigen::Vector2d& p) {
-  const Eigen::Vector2d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (a + t * ab - p).norm();
-}
-
 }  // namespace
 
 CellWall::CellWall(Eigen::Vector2d centre, double diameter, int petals, double petal_depth,
@@ -148,10 +141,11 @@ std::string CellWall::describe() const {
 double CellWall::distance_to_wall(const Eigen::Vector2d& point) const {
   double nearest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < polygon_.size(); ++i) {
-    nearest = std::min(
-        nearest, segment_point_distance(polygon_[i], polygon_[(i + 1) % polygon_.size()], point));
+    nearest =
+        std::min(nearest, engine::segment_distance_squared(
+                              polygon_[i], polygon_[(i + 1) % polygon_.size()], point, point));
   }
-  return nearest;
+  return std::sqrt(nearest);
 }
 
 std::optional<std::string> CellWall::enclosure_error(const Obstacle& obstacle,
@@ -161,20 +155,13 @@ std::optional<std::string> CellWall::enclosure_error(const Obstacle& obstacle,
   double nearest = std::numeric_limits<double>::infinity();
   bool outside = false;
   for (const engine::Wall& wall : obstacle.walls()) {
-    const Eigen::Vector2d middle(wall.center_x, wall.center_y);
-    const Eigen::Vector2d along = unit(wall.yaw);
-    const Eigen::Vector2d across(-along.y(), along.x());
-    const Eigen::Vector2d corners[4] = {
-        middle - wall.half_length * along - wall.half_thickness * across,
-        middle + wall.half_length * along - wall.half_thickness * across,
-        middle + wall.half_length * along + wall.half_thickness * across,
-        middle - wall.half_length * along + wall.half_thickness * across};
-    for (int c = 0; c < 4; ++c) {
-      if (!contains(corners[c])) outside = true;
+    const auto box = corners(wall);
+    for (std::size_t c = 0; c < box.size(); ++c) {
+      if (!contains(box[c])) outside = true;
       for (std::size_t i = 0; i < polygon_.size(); ++i) {
-        nearest = std::min(
-            nearest, engine::segment_distance_squared(corners[c], corners[(c + 1) % 4], polygon_[i],
-                                                      polygon_[(i + 1) % polygon_.size()]));
+        nearest = std::min(nearest, engine::segment_distance_squared(
+                                        box[c], box[(c + 1) % box.size()], polygon_[i],
+                                        polygon_[(i + 1) % polygon_.size()]));
       }
     }
   }

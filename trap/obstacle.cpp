@@ -7,20 +7,23 @@
 
 namespace rodsort::trap {
 
+std::array<Eigen::Vector2d, 4> corners(const engine::Wall& wall) {
+  const Eigen::Vector2d center(wall.center_x, wall.center_y);
+  const Eigen::Vector2d along(std::cos(wall.yaw), std::sin(wall.yaw));
+  const Eigen::Vector2d across(-along.y(), along.x());
+  const Eigen::Vector2d length = wall.half_length * along;
+  const Eigen::Vector2d thickness = wall.half_thickness * across;
+  return {center - length - thickness, center + length - thickness, center + length + thickness,
+          center - length + thickness};
+}
+
 Bounds Obstacle::bounds() const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   Bounds bounds{Eigen::Vector2d(kInf, kInf), Eigen::Vector2d(-kInf, -kInf)};
   for (const engine::Wall& wall : walls()) {
-    const Eigen::Vector2d center(wall.center_x, wall.center_y);
-    const Eigen::Vector2d along(std::cos(wall.yaw), std::sin(wall.yaw));
-    const Eigen::Vector2d across(-along.y(), along.x());
-    for (const double s : {-1.0, 1.0}) {
-      for (const double u : {-1.0, 1.0}) {
-        const Eigen::Vector2d corner =
-            center + s * wall.half_length * along + u * wall.half_thickness * across;
-        bounds.min = bounds.min.cwiseMin(corner);
-        bounds.max = bounds.max.cwiseMax(corner);
-      }
+    for (const Eigen::Vector2d& corner : corners(wall)) {
+      bounds.min = bounds.min.cwiseMin(corner);
+      bounds.max = bounds.max.cwiseMax(corner);
     }
   }
   return bounds;

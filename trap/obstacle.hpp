@@ -9,6 +9,7 @@
 // by at least the reach of the largest rod: fit_error() checks it.
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ class Obstacle {
   /// of clearance from every edge, or nothing when it fits. Pass required_margin() of the rods.
   virtual std::optional<std::string> fit_error(double box_x, double box_y, double margin) const;
 };
+
+/// The four corners of a wall's box in the plane, going round it [mm].
+std::array<Eigen::Vector2d, 4> corners(const engine::Wall& wall);
 
 /// Clearance an obstacle needs from the cell's edges so that no rod reaches a wall across a
 /// periodic edge: the largest distance from a rod's centre of mass to one of its tips [mm].
