@@ -227,16 +227,15 @@ PlacementRegion region_of(const std::string& word) {
 void check_crowding(const ScenarioSpec& spec, const std::vector<engine::RodShape>& shapes,
                     const std::vector<int>& counts, double trap_area, double cell_area,
                     Diagnostics& diagnostics) {
-  const double box_area = cell_area;
   struct Region {
     PlacementRegion region;
     const char* description;
     double area;
   };
   const Region regions[] = {
-      {PlacementRegion::anywhere, "the cell", box_area},
+      {PlacementRegion::anywhere, "the cell", cell_area},
       {PlacementRegion::inside_trap, "the trap", trap_area},
-      {PlacementRegion::outside_trap, "the cell outside the trap", box_area - trap_area}};
+      {PlacementRegion::outside_trap, "the cell outside the trap", cell_area - trap_area}};
   double total = 0.0;
   for (std::size_t i = 0; i < counts.size(); ++i) total += counts[i] * shapes[i].projected_area;
   for (const Region& region : regions) {
