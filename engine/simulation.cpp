@@ -255,6 +255,9 @@ struct Simulation::Impl {
     // No continuous collision detection (DESIGN.md): this also keeps Bullet from widening each
     // rod's broadphase box by its predicted motion (see rod_world.cpp).
     world->getDispatchInfo().m_useContinuous = false;
+    // Bullet recomputes every body's broadphase box each step unless told to skip the inactive
+    // ones: only the walls are inactive (asleep), and a bounded cell has hundreds of them.
+    world->setForceUpdateAllAabbs(false);
     btContactSolverInfo& info = world->getSolverInfo();
     info.m_numIterations = model.solver_iterations;
     info.m_globalCfm = model.constraint_force_mixing;
@@ -301,6 +304,8 @@ struct Simulation::Impl {
       body->setWorldTransform(transform);
       attach_tag(*body, wall_tags.back());
       world->addRigidBody(body.get(), kGroupWall, kGroupRod);
+      // A wall never moves: asleep, its broadphase box is never recomputed (see below).
+      body->setActivationState(ISLAND_SLEEPING);
       walls.push_back(std::move(body));
     }
 
