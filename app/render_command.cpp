@@ -4,6 +4,7 @@
 
 #include "app/command.hpp"
 #include "app/number_checks.hpp"
+#include "metrics/rod_frames.hpp"
 #include "render/run_render.hpp"
 #include "render/scene.hpp"
 #include "runner/exit_code.hpp"
@@ -17,10 +18,10 @@ namespace {
 int render_run_directory(const render::RenderRequest& request) {
   const std::filesystem::path& directory = request.run_directory;
   const std::filesystem::path resolved = directory / runner::kResolvedScenarioFile;
-  const std::filesystem::path rods = directory / runner::kRodsCsvFile;
-  if (!std::filesystem::exists(resolved) || !std::filesystem::exists(rods)) {
+  if (!std::filesystem::exists(resolved) || metrics::rod_frames_file(directory).empty()) {
     std::cerr << "rodsort: " << directory.string() << " is not a run directory (no "
-              << runner::kResolvedScenarioFile << " and " << runner::kRodsCsvFile << ")\n";
+              << runner::kResolvedScenarioFile << " and " << runner::kRodsCsvFile << " or "
+              << runner::kRodsH5mdFile << ")\n";
     return runner::kExitUsage;
   }
   const scenarios::LoadResult loaded = scenarios::load_scenario(resolved);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/frame.hpp"
+#include "metrics/rod_frames.hpp"
 
 namespace rodsort::metrics {
 
@@ -37,7 +38,7 @@ class RodsCsvWriter {
 };
 
 /// Reads rods.csv frame by frame, so that a long run's file need not fit in memory.
-class RodsCsvReader {
+class RodsCsvReader : public RodFrameReader {
  public:
   /// file_name is only used in messages. species_names: the run's species in index order, a name
   /// not among them is an error; when empty, each new name gets the next index. header_line: the
@@ -47,12 +48,12 @@ class RodsCsvReader {
                 std::vector<std::string> species_names = {}, long header_line = 1);
 
   /// The next frame; false at the end of the file or at the first error (see error()).
-  bool next(engine::Frame& frame);
+  bool next(engine::Frame& frame) override;
   /// "file:line:col: what was found, what was expected", or empty.
-  const std::string& error() const { return error_; }
+  const std::string& error() const override { return error_; }
   /// Set when an incomplete last frame (a run stopped while writing) was dropped.
-  const std::string& warning() const { return warning_; }
-  const std::vector<std::string>& species() const { return species_names_; }
+  const std::string& warning() const override { return warning_; }
+  const std::vector<std::string>& species() const override { return species_names_; }
 
  private:
   struct Row {

@@ -10,14 +10,13 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "metrics/rods_csv.hpp"
+#include "metrics/rod_frames.hpp"
 #include "render/external_program.hpp"
 #include "render/movie_encoder.hpp"
 
 namespace rodsort::render {
 namespace {
 
-constexpr const char* kRodsCsv = "rods.csv";
 constexpr const char* kMovieLog = "movie.log";
 constexpr const char* kMovieFile = "movie.mp4";
 
@@ -108,10 +107,13 @@ RenderResult render_run(const RenderRequest& request, const Scene& scene,
           "scripts/install-deps does), or render stills without --movie");
     }
   }
-  const std::filesystem::path rods_path = request.run_directory / kRodsCsv;
-  std::ifstream rods_file(rods_path);
-  if (!rods_file) throw std::runtime_error("cannot open " + rods_path.string());
-  metrics::RodsCsvReader reader(rods_file, rods_path.string(), metrics.species_names);
+  const std::filesystem::path rods_path = metrics::rod_frames_file(request.run_directory);
+  if (rods_path.empty()) {
+    throw std::runtime_error(request.run_directory.string() + " holds no rods.csv or rods.h5");
+  }
+  const std::unique_ptr<metrics::RodFrameReader> frames =
+      metrics::open_rod_frames(rods_path, metrics.species_names);
+  metrics::RodFrameReader& reader = *frames;
   metrics::MetricsObserver observer(metrics);
 
   make_directories(output);

@@ -4,7 +4,7 @@
 #include <ostream>
 
 #include "metrics/metrics_observer.hpp"
-#include "metrics/rods_csv.hpp"
+#include "metrics/rod_frames.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
@@ -30,10 +30,10 @@ int analyze_run(const AnalyzeRequest& request, std::ostream& err) {
     return kExitUsage;
   }
   const std::filesystem::path resolved = directory / kResolvedScenarioFile;
-  const std::filesystem::path rods = directory / kRodsCsvFile;
-  if (!std::filesystem::exists(resolved) || !std::filesystem::exists(rods)) {
+  const std::filesystem::path rods = metrics::rod_frames_file(directory);
+  if (!std::filesystem::exists(resolved) || rods.empty()) {
     err << "rodsort: " << directory.string() << " is not a run directory (no "
-        << kResolvedScenarioFile << " and " << kRodsCsvFile << ")\n";
+        << kResolvedScenarioFile << " and " << kRodsCsvFile << " or " << kRodsH5mdFile << ")\n";
     return kExitUsage;
   }
   const std::filesystem::path output =
@@ -60,8 +60,9 @@ int analyze_run(const AnalyzeRequest& request, std::ostream& err) {
   if (!loaded.ok()) return request.set_options.empty() ? kExitFailure : kExitUsage;
   metrics::MetricsObserver observer(metrics_config(*loaded.scenario));
 
-  std::ifstream in(rods);
-  metrics::RodsCsvReader reader(in, rods.string(), observer.config().species_names);
+  const std::unique_ptr<metrics::RodFrameReader> source =
+      metrics::open_rod_frames(rods, observer.config().species_names);
+  metrics::RodFrameReader& reader = *source;
   std::string text = observer.csv_header() + "\n";
   engine::Frame frame;
   std::size_t frames = 0;

@@ -27,6 +27,7 @@ std::string hex(std::uint64_t value) {
   return text;
 }
 constexpr const char* kFileBytesPrefix = "bytes:";
+constexpr const char* kFileFramesPrefix = "frames:";
 
 double parse_double(const std::string& text, const std::string& key) {
   double value = 0.0;
@@ -62,6 +63,9 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
   out << kMagic << '\n';
   for (const auto& [file, bytes] : checkpoint.file_bytes) {
     out << kFileBytesPrefix << file << ' ' << bytes << '\n';
+  }
+  for (const auto& [file, frames] : checkpoint.file_frames) {
+    out << kFileFramesPrefix << file << ' ' << frames << '\n';
   }
   out << "wall_s " << scenarios::format_real(checkpoint.wall_s) << '\n';
   out << "cpu_s " << scenarios::format_real(checkpoint.cpu_s) << '\n';
@@ -125,6 +129,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
       const std::string value = line.substr(space + 1);
       if (key.rfind(kFileBytesPrefix, 0) == 0) {
         checkpoint.file_bytes[key.substr(std::string(kFileBytesPrefix).size())] =
+            parse_unsigned(value, key);
+      } else if (key.rfind(kFileFramesPrefix, 0) == 0) {
+        checkpoint.file_frames[key.substr(std::string(kFileFramesPrefix).size())] =
             parse_unsigned(value, key);
       } else if (key == "wall_s") {
         checkpoint.wall_s = parse_double(value, key);

@@ -24,12 +24,15 @@ namespace rodsort::runner {
 struct Checkpoint {
   engine::State state;
   std::map<std::string, std::uint64_t> file_bytes;  ///< output file name -> its size at the state
+  /// Output files of frames (rods.h5) -> the frames they held at the state.
+  std::map<std::string, std::uint64_t> file_frames;
   double wall_s = 0.0;  ///< wall-clock seconds spent on the run up to the state, over all sessions
   double cpu_s = 0.0;   ///< CPU seconds spent on the run up to the state, over all sessions
   int sessions = 1;     ///< processes that have worked on the run so far
   std::string started_at;  ///< UTC, ISO 8601, when the first session started
-  /// Offset in rods.csv of the first frame the metrics observer must see again on resume: the
-  /// frames from there on cover the observer's window.
+  /// Where the metrics observer must start seeing frames again on resume, so that the frames from
+  /// there on cover its window: a byte offset in rods.csv, or a frame's index in rods.h5 when the
+  /// run writes no rods.csv.
   std::uint64_t metrics_replay_offset = 0;
   /// engine::fingerprint of scenario.resolved.yaml as the run wrote it.
   std::uint64_t scenario_fingerprint = 0;

@@ -16,6 +16,7 @@
 #include "engine/fingerprint.hpp"
 #include "engine/simulation.hpp"
 #include "metrics/rods_csv.hpp"
+#include "metrics/rods_h5md.hpp"
 #include "runner/append_file.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/checkpoint.hpp"
@@ -55,12 +56,16 @@ class RunSession {
         observer_(plan.metrics),
         // The base's top surface moves within [-A, A] and the lid's bottom within w + [-A, A].
         dump_(plan.model, -plan.model.drive.amplitude,
-              plan.model.drive.gap + plan.model.drive.amplitude, plan.dump_style) {}
+              plan.model.drive.gap + plan.model.drive.amplitude, plan.dump_style),
+        rounding_(plan.h5md_precision, plan.model.box_x, plan.model.box_y) {}
 
   int start() {
     write_file_atomically(directory_ / kResolvedScenarioFile, plan_.resolved_yaml);
     open_files();
-    rods_->append(std::string(metrics::kRodsCsvHeader) + "\n");
+    if (rods_) rods_->append(std::string(metrics::kRodsCsvHeader) + "\n");
+    if (plan_.rods_h5md) {
+      h5md_ = std::make_unique<metrics::RodsH5mdWriter>(directory_ / kRodsH5mdFile, h5md_layout());
+    }
     metrics_->append(observer_.csv_header() + "\n");
     if (schedule_.trajectory_steps > 0 && !plan_.model.walls.empty()) {
       write_file_atomically(directory_ / kWallsDumpFile, dump_.walls(plan_.model));
@@ -112,12 +117,26 @@ class RunSession {
       }
       file->truncate(recorded->second);
     }
+    std::uint64_t h5md_frames = 0;
+    if (plan_.rods_h5md) {
+      const auto recorded = checkpoint.file_frames.find(kRodsH5mdFile);
+      if (recorded == checkpoint.file_frames.end()) {
+        throw std::runtime_error("the checkpoint in " + directory_.string() +
+                                 " records no frame count for " + kRodsH5mdFile);
+      }
+      h5md_frames = recorded->second;
+    }
     simulation_.restore(checkpoint.state);
     prior_wall_s_ = checkpoint.wall_s;
     prior_cpu_s_ = checkpoint.cpu_s;
     sessions_ = checkpoint.sessions + 1;
     started_at_ = checkpoint.started_at;
-    replay_metrics(checkpoint.metrics_replay_offset);
+    replay_metrics(checkpoint.metrics_replay_offset, h5md_frames);
+    if (plan_.rods_h5md) {
+      // Opened after the replay, which reads the file on its own.
+      h5md_ = std::make_unique<metrics::RodsH5mdWriter>(directory_ / kRodsH5mdFile, h5md_layout(),
+                                                        h5md_frames);
+    }
     begin_session(true);
     log("rodsort: resuming %s at t = %g s of %g s in %s\n", plan_.name.c_str(), simulation_.time(),
         plan_.duration_s, directory_.c_str());
@@ -137,11 +156,28 @@ class RunSession {
  private:
   struct FrameOffset {
     double time_s;
-    std::uint64_t offset;  ///< in rods.csv
+    std::uint64_t offset;  ///< in rods.csv [bytes], or in rods.h5 [frames] without rods.csv
   };
 
+  metrics::H5mdLayout h5md_layout() const {
+    metrics::H5mdLayout layout;
+    layout.species_names = plan_.metrics.species_names;
+    for (const engine::RodInit& rod : plan_.model.rods) layout.rod_species.push_back(rod.species);
+    layout.box_x = plan_.model.box_x;
+    layout.box_y = plan_.model.box_y;
+    layout.box_z = plan_.model.drive.gap;
+    layout.walls = plan_.model.walls;
+    layout.scenario_yaml = plan_.resolved_yaml;
+    layout.precision = plan_.h5md_precision;
+    layout.creator_version = version();
+    return layout;
+  }
+
+  /// The file the frames are read back from (rods.csv when the run writes it).
+  const char* frames_file() const { return plan_.rods_csv ? kRodsCsvFile : kRodsH5mdFile; }
+
   void open_files() {
-    rods_ = std::make_unique<AppendFile>(directory_ / kRodsCsvFile);
+    if (plan_.rods_csv) rods_ = std::make_unique<AppendFile>(directory_ / kRodsCsvFile);
     metrics_ = std::make_unique<AppendFile>(directory_ / kMetricsCsvFile);
     if (schedule_.trajectory_steps > 0) {
       trajectory_ = std::make_unique<AppendFile>(directory_ / kTrajectoryFile);
@@ -149,7 +185,8 @@ class RunSession {
   }
 
   std::vector<AppendFile*> files() const {
-    std::vector<AppendFile*> open = {rods_.get(), metrics_.get()};
+    std::vector<AppendFile*> open = {metrics_.get()};
+    if (rods_) open.push_back(rods_.get());
     if (trajectory_) open.push_back(trajectory_.get());
     return open;
   }
@@ -220,7 +257,7 @@ class RunSession {
       char where[160];
       std::snprintf(where, sizeof where, "; the last checkpoint, at t = %g s, is kept",
                     plan_.model.dt * static_cast<double>(last_checkpoint_step_));
-      throw std::runtime_error(std::string(error.what()) + where + ", and " + kRodsCsvFile +
+      throw std::runtime_error(std::string(error.what()) + where + ", and " + frames_file() +
                                " holds the frames before the breakdown (rodsort render " +
                                directory_.string() + ")");
     }
@@ -236,9 +273,10 @@ class RunSession {
     const bool trajectory_due = trajectory_ && !schedule_.is_trajectory(step);
     if (!frame_due && !trajectory_due) return;
     const engine::Frame frame = simulation_.frame();
-    if (frame_due) write_frame(frame);
+    if (frame_due) write_frame(frame, step);
     if (trajectory_due) trajectory_->append(dump_.format(frame, step));
     for (AppendFile* file : files()) file->sync();
+    if (h5md_) h5md_->commit();
   }
 
   int stop_on_signal(int signal_number, std::optional<ProgressReporter>& progress) {
@@ -258,7 +296,7 @@ class RunSession {
     const bool trajectory_due = schedule_.is_trajectory(step);
     if (frame_due || trajectory_due) {
       const engine::Frame frame = simulation_.frame();
-      if (frame_due) write_frame(frame);
+      if (frame_due) write_frame(frame, step);
       if (trajectory_due) trajectory_->append(dump_.format(frame, step));
     }
     while (next_snapshot_ < schedule_.snapshots.size() &&
@@ -270,16 +308,31 @@ class RunSession {
     if (schedule_.is_checkpoint(step)) write_checkpoint_now();
   }
 
-  void write_frame(const engine::Frame& frame) {
+  /// Writes a frame to rods.csv and rods.h5, and feeds the metrics observer the frame as the first
+  /// of them holds it, so that `rodsort analyze` computes the same rows from that file.
+  void write_frame(const engine::Frame& frame, std::int64_t step) {
+    std::optional<metrics::MetricsRow> row;
+    if (h5md_) {
+      const std::uint64_t index = h5md_->frames();
+      h5md_->write(frame, step);
+      if (!rods_) {
+        const engine::Frame stored = rounding_.stored(frame);
+        remember_frame(stored.time, index);
+        row = observer_.observe(stored);
+      }
+    }
+    if (rods_) row = write_csv_frame(frame);
+    if (row) metrics_->append(observer_.csv_line(*row) + "\n");
+  }
+
+  std::optional<metrics::MetricsRow> write_csv_frame(const engine::Frame& frame) {
     frame_text_.str("");
     metrics::RodsCsvWriter writer(frame_text_, plan_.metrics.species_names);
     writer.write(frame);
     const std::string text = frame_text_.str();
     const std::uint64_t offset = rods_->size();
     rods_->append(text);
-    if (const auto row = observe_stored(text, offset)) {
-      metrics_->append(observer_.csv_line(*row) + "\n");
-    }
+    return observe_stored(text, offset);
   }
 
   /// Feeds the observer one frame as rods.csv holds it, and remembers where the frame starts.
@@ -307,9 +360,30 @@ class RunSession {
     }
   }
 
-  /// Refills the metrics observer from rods.csv, from `offset` to the end, without writing rows
-  /// (metrics.csv already has them).
-  void replay_metrics(std::uint64_t offset) {
+  /// Refills the metrics observer from rods.csv (from byte `offset` to the end) or, without it,
+  /// from rods.h5 (frames `offset` to `h5md_frames`), without writing rows (metrics.csv already
+  /// has them).
+  void replay_metrics(std::uint64_t offset, std::uint64_t h5md_frames) {
+    if (!rods_) {
+      const std::filesystem::path path = directory_ / kRodsH5mdFile;
+      metrics::RodsH5mdReader reader(path, plan_.metrics.species_names);
+      if (!reader.error().empty()) {
+        throw std::runtime_error("cannot read back rods.h5: " + reader.error());
+      }
+      if (offset > h5md_frames || h5md_frames > reader.frame_count()) {
+        throw std::runtime_error("the checkpoint points past the end of " + path.string());
+      }
+      reader.seek(offset);
+      engine::Frame stored;
+      for (std::uint64_t index = offset; index < h5md_frames && reader.next(stored); ++index) {
+        remember_frame(stored.time, index);
+        observer_.observe(stored);
+      }
+      if (!reader.error().empty()) {
+        throw std::runtime_error("cannot read back rods.h5: " + reader.error());
+      }
+      return;
+    }
     const std::string text = read_file(rods_->path());
     if (offset > text.size()) {
       throw std::runtime_error("the checkpoint points past the end of " + rods_->path().string());
@@ -340,19 +414,22 @@ class RunSession {
 
   void write_checkpoint_now() {
     for (AppendFile* file : files()) file->sync();
+    if (h5md_) h5md_->commit();
     Checkpoint checkpoint;
     checkpoint.state = simulation_.state();
     for (AppendFile* file : files()) {
       checkpoint.file_bytes[file->path().filename().string()] = file->size();
     }
+    if (h5md_) checkpoint.file_frames[kRodsH5mdFile] = h5md_->frames();
     checkpoint.wall_s = total_wall_s();
     checkpoint.cpu_s = total_cpu_s();
     checkpoint.sessions = sessions_;
     checkpoint.started_at = started_at_;
     checkpoint.scenario_fingerprint = engine::fingerprint(plan_.resolved_yaml);
     checkpoint.build = build_identity();
-    checkpoint.metrics_replay_offset =
-        recent_frames_.empty() ? rods_->size() : recent_frames_.front().offset;
+    checkpoint.metrics_replay_offset = !recent_frames_.empty() ? recent_frames_.front().offset
+                                       : rods_                 ? rods_->size()
+                                                               : h5md_->frames();
     write_checkpoint(directory_ / kCheckpointFile, checkpoint);
     last_checkpoint_step_ = simulation_.step_count();
     write_record(RunStatus::kRunning, "");
@@ -406,7 +483,9 @@ class RunSession {
   engine::Simulation simulation_;
   metrics::MetricsObserver observer_;
   LammpsDumpFormatter dump_;
+  metrics::H5mdRounding rounding_;
   std::unique_ptr<AppendFile> rods_, metrics_, trajectory_;
+  std::unique_ptr<metrics::RodsH5mdWriter> h5md_;
   std::ostringstream frame_text_;
   std::deque<FrameOffset> recent_frames_;
   std::size_t next_snapshot_ = 0;

@@ -7,9 +7,9 @@
 namespace rodsort::runner {
 namespace {
 
-constexpr std::array kRunFiles = {kResolvedScenarioFile, kRodsCsvFile,   kMetricsCsvFile,
-                                  kTrajectoryFile,       kWallsDumpFile, kCheckpointFile,
-                                  kRunRecordFile};
+constexpr std::array kRunFiles = {kResolvedScenarioFile, kRodsCsvFile,    kRodsH5mdFile,
+                                  kMetricsCsvFile,       kTrajectoryFile, kWallsDumpFile,
+                                  kCheckpointFile,       kRunRecordFile};
 
 bool is_snapshot(const std::filesystem::path& file) {
   const std::string name = file.filename().string();

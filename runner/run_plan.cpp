@@ -50,6 +50,10 @@ RunPlan make_run_plan(const scenarios::Scenario& scenario) {
   plan.metrics = metrics_config(scenario);
   plan.resolved_yaml = scenarios::resolved_yaml(scenario);
   plan.dump_style = scenario.output.trajectory_named ? DumpStyle::named : DumpStyle::plain;
+  plan.rods_csv = scenario.output.rods_csv;
+  plan.rods_h5md = scenario.output.rods_h5md;
+  plan.h5md_precision =
+      scenario.output.h5md_double ? metrics::H5mdPrecision::full : metrics::H5mdPrecision::single;
   return plan;
 }
 

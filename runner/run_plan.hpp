@@ -7,6 +7,7 @@
 
 #include "engine/model.hpp"
 #include "metrics/metrics_observer.hpp"
+#include "metrics/rods_h5md.hpp"
 #include "runner/lammps_dump.hpp"
 #include "runner/run_schedule.hpp"
 #include "scenarios/scenario.hpp"
@@ -22,6 +23,9 @@ struct RunPlan {
   metrics::MetricsConfig metrics;  ///< its inside test holds the trap
   std::string resolved_yaml;       ///< scenario.resolved.yaml's text
   DumpStyle dump_style = DumpStyle::plain;  ///< of trajectory.dump and walls.dump
+  bool rods_csv = true;                     ///< write rods.csv
+  bool rods_h5md = false;                   ///< write rods.h5
+  metrics::H5mdPrecision h5md_precision = metrics::H5mdPrecision::single;
 };
 
 RunPlan make_run_plan(const scenarios::Scenario& scenario);

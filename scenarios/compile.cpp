@@ -478,6 +478,14 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   OutputSettings& output = scenario.output;
   output.frame_interval = spec.frame_interval.value;
   output.frame_steps = to_steps(spec.frame_interval, dt, diagnostics);
+  if (spec.h5md_precision.given && spec.rods_format.value == "csv") {
+    // A warning only: a sweep may compare the formats.
+    diagnostics.warning(spec.h5md_precision.where, spec.h5md_precision.path,
+                        "ignored: it is only for rods.h5, and output.rods_format is csv");
+  }
+  output.rods_csv = spec.rods_format.value != "h5md";
+  output.rods_h5md = spec.rods_format.value != "csv";
+  output.h5md_double = spec.h5md_precision.value == "double";
   output.trajectory_interval = spec.trajectory_interval.value;
   output.trajectory_named = spec.trajectory_style.value == "named";
   output.trajectory_steps =

@@ -241,6 +241,8 @@ std::string resolved_yaml(const Scenario& scenario) {
 
   w.key("output").begin_map();
   w.key("frame_interval").number(spec.frame_interval.value);
+  w.key("rods_format").word(spec.rods_format.value);
+  w.key("h5md_precision").word(spec.h5md_precision.value);
   w.key("trajectory_interval").number(spec.trajectory_interval.value);
   w.key("trajectory_style").word(spec.trajectory_style.value);
   w.key("bullet_snapshots").numbers(spec.bullet_snapshots.value);

@@ -34,6 +34,9 @@ struct RunSettings {
 struct OutputSettings {
   double frame_interval;                 ///< between rows of rods.csv [s]
   std::int64_t frame_steps;              ///< the same in steps (>= 1)
+  bool rods_csv = true;                  ///< output.rods_format: csv or both (rods.csv)
+  bool rods_h5md = false;                ///< output.rods_format: h5md or both (rods.h5)
+  bool h5md_double = false;              ///< output.h5md_precision: double
   double trajectory_interval;            ///< between frames of the sphere trajectory [s]; 0: none
   bool trajectory_named = false;         ///< output.trajectory_style: named (species names, TIME)
   std::int64_t trajectory_steps;         ///< the same in steps; 0: none

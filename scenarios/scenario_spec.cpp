@@ -271,6 +271,8 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
 
   SectionReader output = top.section("output");
   spec.frame_interval = output.real("frame_interval");
+  spec.rods_format = output.choice("rods_format");
+  spec.h5md_precision = output.choice("h5md_precision");
   spec.trajectory_interval = output.real("trajectory_interval");
   spec.trajectory_style = output.choice("trajectory_style");
   spec.bullet_snapshots = output.real_list("bullet_snapshots");

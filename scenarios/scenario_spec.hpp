@@ -100,6 +100,8 @@ struct ScenarioSpec {
   Sourced<std::string> contact_solver;   ///< "sweeps" or "exact"
 
   Sourced<double> frame_interval;                 ///< [s]
+  Sourced<std::string> rods_format;               ///< "csv", "h5md" or "both"
+  Sourced<std::string> h5md_precision;            ///< "single" or "double"
   Sourced<double> trajectory_interval;            ///< [s]; 0: none
   Sourced<std::string> trajectory_style;          ///< "plain" or "named"
   Sourced<std::vector<double>> bullet_snapshots;  ///< [s]

@@ -208,10 +208,9 @@ def wrap_angle(angle):
     return math.pi if wrapped == -math.pi else wrapped
 
 
-def orientation_changes(run_dir, tau):
-    """Per species: the changes of in-plane orientation [degrees] of every rod over tau, and the
-    lag in frames and the real time it spans."""
-    path = os.path.join(run_dir, "rods.csv")
+def headings_from_csv(path):
+    """Frame times, each rod's in-plane heading in every frame, and each rod's species, from
+    rods.csv."""
     if not os.path.isfile(path):
         raise PlotError(f"{path}: no such file (P(dtheta) needs the rods' frames)")
     headings = {}  # rod -> list of headings, one per frame
@@ -239,6 +238,45 @@ def orientation_changes(run_dir, tau):
                 times.append(time)
             headings.setdefault(row[rod], []).append(heading)
             species_of.setdefault(row[rod], row[species])
+    return times, headings, species_of
+
+
+def headings_from_h5md(path):
+    """The same from rods.h5 (H5MD, docs/cli.md)."""
+    try:
+        import h5py
+    except ImportError:
+        raise PlotError(f"{path}: reading rods.h5 needs h5py (Debian's python3-h5py)") from None
+    try:
+        with h5py.File(path, "r") as f:
+            rods = f["particles/rods"]
+            axes = rods["orientation/value"][:]
+            times = [float(t) for t in rods["orientation/time"][:]]
+            steps = rods["orientation/step"][:]
+            names = [n.decode() if isinstance(n, bytes) else n
+                     for n in f["parameters/species_names"][:]]
+            species = [names[s] for s in rods["species"][:]]
+    except (OSError, KeyError) as error:
+        raise PlotError(f"{path}: cannot read it as rods.h5 ({error})") from None
+    frames = min(len(times), len(axes))
+    while frames > 0 and (steps[frames - 1] < 0 or math.isnan(times[frames - 1])):
+        frames -= 1  # frames a stopped run did not finish writing
+    import numpy
+    angles = numpy.arctan2(axes[:frames, :, 1].astype(float), axes[:frames, :, 0].astype(float))
+    headings = {str(rod): angles[:, rod].tolist() for rod in range(axes.shape[1])}
+    species_of = {str(rod): species[rod] for rod in range(axes.shape[1])}
+    return times[:frames], headings, species_of
+
+
+def orientation_changes(run_dir, tau):
+    """Per species: the changes of in-plane orientation [degrees] of every rod over tau, and the
+    lag in frames and the real time it spans."""
+    path = os.path.join(run_dir, "rods.csv")
+    if not os.path.isfile(path) and os.path.isfile(os.path.join(run_dir, "rods.h5")):
+        path = os.path.join(run_dir, "rods.h5")
+        times, headings, species_of = headings_from_h5md(path)
+    else:
+        times, headings, species_of = headings_from_csv(path)
     if len(times) < 2:
         raise PlotError(f"{path}: P(dtheta) needs at least two frames, found {len(times)}")
     interval = (times[-1] - times[0]) / (len(times) - 1)

@@ -101,13 +101,15 @@ TEST_CASE("Render draws the frames nearest the times asked, marking stationary r
   CHECK(png.has_colour(x0, y0, render::species_colour(0)));
 }
 
-TEST_CASE("Render refuses a run directory without rods.csv, naming the file", "[render][run]") {
+TEST_CASE("Render refuses a run directory without rods.csv or rods.h5, naming both",
+          "[render][run]") {
   const TestScene test;
   const TempDirectory run;
   render::RenderRequest request;
   request.run_directory = run.path();
-  CHECK_THROWS_WITH(render::render_run(request, test.scene, test.metrics_config()),
-                    Catch::Contains((run / "rods.csv").string()));
+  CHECK_THROWS_WITH(
+      render::render_run(request, test.scene, test.metrics_config()),
+      Catch::Contains(run.path().string()) && Catch::Contains("no rods.csv or rods.h5"));
 }
 
 TEST_CASE("Render --movie encodes an MP4 with ffmpeg", "[render][run][movie]") {

@@ -27,6 +27,7 @@ Checkpoint sample_checkpoint() {
   rod.noise_rng = {5, 6, 7, 8};
   checkpoint.state.rods = {rod, rod};
   checkpoint.file_bytes = {{"rods.csv", 123456}, {"metrics.csv", 789}};
+  checkpoint.file_frames = {{"rods.h5", 1431}};
   checkpoint.wall_s = 10.5;
   checkpoint.cpu_s = 0.1 + 0.2;
   checkpoint.sessions = 3;
@@ -45,6 +46,7 @@ TEST_CASE("a checkpoint reads back exactly as written", "[runner][checkpoint]") 
   CHECK(engine::hash_state(back.state) == engine::hash_state(written.state));
   CHECK(back.state.step == 12500);
   CHECK(back.file_bytes == written.file_bytes);
+  CHECK(back.file_frames == written.file_frames);
   CHECK(back.wall_s == written.wall_s);
   CHECK(back.cpu_s == written.cpu_s);
   CHECK(back.sessions == 3);

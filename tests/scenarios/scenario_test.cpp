@@ -392,3 +392,27 @@ TEST_CASE("a circle warns about a flower's keys, which a sweep over the shape ma
   CHECK_THAT(errors_of("cell: {shape: circle, diameter: 30}\ntrap: {angle: 100}\n"),
              Catch::Contains("reaches outside the circular cell 30 mm across"));
 }
+
+TEST_CASE("output.rods_format chooses rods.csv, rods.h5 or both", "[scenario][output]") {
+  const Scenario plain = load_ok("trap: {angle: 100}\n");
+  CHECK(plain.output.rods_csv);
+  CHECK_FALSE(plain.output.rods_h5md);
+  const Scenario h5md =
+      load_ok("trap: {angle: 100}\noutput: {rods_format: h5md, h5md_precision: double}\n");
+  CHECK_FALSE(h5md.output.rods_csv);
+  CHECK(h5md.output.rods_h5md);
+  CHECK(h5md.output.h5md_double);
+  CHECK_THAT(resolved_yaml(h5md), Catch::Contains("rods_format: h5md\n  h5md_precision: double\n"));
+  const Scenario both = load_ok("trap: {angle: 100}\noutput: {rods_format: both}\n");
+  CHECK(both.output.rods_csv);
+  CHECK(both.output.rods_h5md);
+  CHECK_FALSE(both.output.h5md_double);
+
+  CHECK_THAT(errors_of("trap: {angle: 100}\noutput: {rods_format: hdf5}\n"),
+             Catch::Contains("output.rods_format") && Catch::Contains("h5md"));
+  const LoadResult ignored =
+      load_scenario_text("trap: {angle: 100}\noutput: {h5md_precision: double}\n", "test.yaml");
+  REQUIRE(ignored.ok());
+  CHECK_THAT(format_diagnostics(ignored.diagnostics),
+             Catch::Contains("output.h5md_precision: ignored: it is only for rods.h5"));
+}
