@@ -251,7 +251,7 @@ struct RodsH5mdWriter::Impl {
   H5mdRounding rounding;
   Id file;
   std::array<Id, kElements.size()> values;  ///< the value datasets
-  Id steps, times;
+  Id steps, times, edges;
   std::uint64_t chunk_frames = 1;
   std::uint64_t committed = 0;
   std::vector<std::int64_t> pending_steps;
@@ -313,8 +313,6 @@ struct RodsH5mdWriter::Impl {
     const Id box = make_group("/particles/rods/box");
     write_int_attribute(box.get(), "dimension", {3});
     write_strings_attribute(box.get(), "boundary", {"periodic", "periodic", "none"});
-    const std::vector<double> edges = {layout.box_x, layout.box_y, layout.box_z};
-    write_fixed(box.get(), "edges", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {3}, edges.data(), name);
 
     const Id particles = group_id(H5Gopen2(file.get(), kRods, H5P_DEFAULT));
     write_fixed(particles.get(), "species", H5T_STD_I32LE, H5T_NATIVE_INT, {rods()},
@@ -362,11 +360,27 @@ struct RodsH5mdWriter::Impl {
         }
       }
     }
-    write_string_attribute(times.get(), "unit", "s");
-    for (const std::size_t e : {std::size_t{0}, std::size_t{3}}) {
-      write_string_attribute(values[e].get(), "unit", e == 0 ? "mm" : "mm s-1");
+    // The box's edges as a time series of matrices, rows the edge vectors: H5MD allows a fixed
+    // vector for a box that does not change, but MDAnalysis (2.4) reads only this form.
+    {
+      const Id group = make_group((std::string(kRods) + "/box/edges").c_str());
+      const std::array<hsize_t, 3> dims = {0, 3, 3};
+      const std::array<hsize_t, 3> max_dims = {H5S_UNLIMITED, 3, 3};
+      const Id space = space_id(H5Screate_simple(3, dims.data(), max_dims.data()));
+      const Id properties = growing_properties({chunk, 3, 3}, H5T_NATIVE_DOUBLE, &kValueFill);
+      edges = dataset_id(checked(H5Dcreate2(group.get(), "value", H5T_IEEE_F64LE, space.get(),
+                                            H5P_DEFAULT, properties.get(), H5P_DEFAULT),
+                                 name, "create box/edges"));
+      const std::string position = std::string(kRods) + "/position/";
+      for (const char* shared : {"step", "time"}) {
+        checked(H5Lcreate_hard(file.get(), (position + shared).c_str(), group.get(), shared,
+                               H5P_DEFAULT, H5P_DEFAULT),
+                name, std::string("link ") + shared);
+      }
     }
-    write_string_attribute(values[4].get(), "unit", "s-1");
+    // Lengths in mm and speeds in mm/s are not among the units MDAnalysis knows, and it refuses a
+    // file with a unit it does not know: only the time's unit is written (docs/cli.md gives all).
+    write_string_attribute(times.get(), "unit", "s");
 
     const Id parameters = make_group("/parameters");
     write_strings(parameters.get(), "species_names", layout.species_names, name);
@@ -401,6 +415,9 @@ struct RodsH5mdWriter::Impl {
         checked(H5Dopen2(file.get(), (position + "step").c_str(), H5P_DEFAULT), name, "open step"));
     times = dataset_id(
         checked(H5Dopen2(file.get(), (position + "time").c_str(), H5P_DEFAULT), name, "open time"));
+    const std::string box_edges = std::string(kRods) + "/box/edges/value";
+    edges = dataset_id(
+        checked(H5Dopen2(file.get(), box_edges.c_str(), H5P_DEFAULT), name, "open box/edges"));
     {
       const Id properties = plist_id(H5Dget_create_plist(steps.get()));
       hsize_t chunk = 1;
@@ -416,7 +433,9 @@ struct RodsH5mdWriter::Impl {
                                  std::to_string(keep_frames) +
                                  "): it was changed or damaged after the checkpoint was written");
       }
-      if (rank >= 2 && dims[1] != rods()) {
+      const bool per_rod =
+          dataset != steps.get() && dataset != times.get() && dataset != edges.get();
+      if (per_rod && dims[1] != rods()) {
         throw std::runtime_error(name + " holds " + std::to_string(dims[1]) + " rods, the run " +
                                  std::to_string(rods()));
       }
@@ -428,7 +447,7 @@ struct RodsH5mdWriter::Impl {
   }
 
   std::vector<hid_t> all_datasets() const {
-    std::vector<hid_t> all = {steps.get(), times.get()};
+    std::vector<hid_t> all = {steps.get(), times.get(), edges.get()};
     for (const Id& dataset : values) all.push_back(dataset.get());
     return all;
   }
@@ -472,6 +491,13 @@ struct RodsH5mdWriter::Impl {
       }
       pending[e].clear();
     }
+    std::vector<double> box(9 * count, 0.0);
+    for (hsize_t f = 0; f < count; ++f) {
+      box[9 * f] = layout.box_x;
+      box[9 * f + 4] = layout.box_y;
+      box[9 * f + 8] = layout.box_z;
+    }
+    append(edges.get(), H5T_NATIVE_DOUBLE, box.data(), count, "box/edges");
     // step and time last: a frame whose step is in the file has all its values there.
     append(times.get(), H5T_NATIVE_DOUBLE, pending_times.data(), count, "time");
     append(steps.get(), H5T_NATIVE_INT64, pending_steps.data(), count, "step");
@@ -527,7 +553,7 @@ struct RodsH5mdReader::Impl {
   std::string name;
   Id file;
   std::array<Id, kElements.size()> values;
-  Id steps, times;
+  Id steps, times, edges;
   std::vector<std::string> species_names;
   std::vector<int> rod_species;
   double box_x = 0.0, box_y = 0.0;
@@ -574,14 +600,7 @@ struct RodsH5mdReader::Impl {
                 name, "read " + rods + "/species");
       }
     }
-    {
-      const Id edges = open_dataset(rods + "/box/edges");
-      std::array<double, 3> box{};
-      checked(H5Dread(edges.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, box.data()),
-              name, "read the box");
-      box_x = box[0];
-      box_y = box[1];
-    }
+    edges = open_dataset(rods + "/box/edges/value");
     for (const int species : rod_species) {
       if (species < 0 || species >= static_cast<int>(species_names.size())) {
         throw std::runtime_error(name + ": a rod's species " + std::to_string(species) +
@@ -612,6 +631,22 @@ struct RodsH5mdReader::Impl {
                                  " does not have the shape rodsort writes");
       }
       count = std::min<std::uint64_t>(count, dims[0]);
+    }
+    {
+      const Id space = space_id(H5Dget_space(edges.get()));
+      std::array<hsize_t, 3> dims{};
+      if (H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr) != 3 || dims[1] != 3 ||
+          dims[2] != 3) {
+        throw std::runtime_error(name + ": " + rods +
+                                 "/box/edges/value is not a series of 3 x 3 matrices");
+      }
+      count = std::min<std::uint64_t>(count, dims[0]);
+      if (count > 0) {
+        std::vector<double> box;
+        read(edges.get(), H5T_NATIVE_DOUBLE, 0, 1, box);
+        box_x = box[0];
+        box_y = box[4];
+      }
     }
     frames = count;
     {

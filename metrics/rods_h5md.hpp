@@ -1,10 +1,13 @@
 #pragma once
 // rods.h5: the frames of rods.csv in HDF5, laid out as H5MD 1.1 (https://www.nongnu.org/h5md/),
-// which h5py, MDAnalysis and any HDF5 tool open. Compressed (shuffle + deflate) and binary, it
-// takes several times less disk than rods.csv and loads much faster.
+// which h5py, MDAnalysis (with convert_units=False: it knows no millimetres) and any HDF5 tool
+// open. Lengths in mm, velocities in mm/s, angular velocities in rad/s, times in s. Compressed
+// (shuffle + deflate) and binary, it takes several times less disk than rods.csv and loads much
+// faster.
 //
 //   /h5md                                 version 1.1, creator rodsort
-//   /particles/rods/box                   dimension 3, boundary periodic periodic none; edges [mm]
+//   /particles/rods/box                   dimension 3, boundary periodic periodic none
+//   /particles/rods/box/edges/value       (F, 3, 3) the cell's edge vectors and the gap [mm]
 //   /particles/rods/species               (N) int32, index into /parameters/species_names
 //   /particles/rods/position/value        (F, N, 3) x, y wrapped into the cell, z [mm]
 //   /particles/rods/image/value           (F, N, 3) int32: unwrapped = position + image * edges
