@@ -3,26 +3,23 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <csignal>
 #include <cstring>
 #include <deque>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "engine/fingerprint.hpp"
 #include "engine/simulation.hpp"
-#include "metrics/rods_csv.hpp"
-#include "metrics/rods_h5md.hpp"
 #include "runner/append_file.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/checkpoint.hpp"
 #include "runner/clocks.hpp"
 #include "runner/cost_estimate.hpp"
 #include "runner/exit_code.hpp"
+#include "runner/frame_file.hpp"
 #include "runner/interrupt.hpp"
 #include "runner/lammps_dump.hpp"
 #include "runner/progress.hpp"
@@ -38,13 +35,6 @@ namespace {
 /// reading the clocks costs nothing next to a step.
 constexpr std::int64_t kProgressEverySteps = 16;
 
-/// The time of the first line of a rods.csv chunk (its first field).
-double leading_time(std::string_view line) {
-  double time = 0.0;
-  std::from_chars(line.data(), line.data() + line.size(), time);
-  return time;
-}
-
 class RunSession {
  public:
   RunSession(const RunPlan& plan, std::filesystem::path directory, const RunOptions& options)
@@ -57,15 +47,12 @@ class RunSession {
         // The base's top surface moves within [-A, A] and the lid's bottom within w + [-A, A].
         dump_(plan.model, -plan.model.drive.amplitude,
               plan.model.drive.gap + plan.model.drive.amplitude, plan.dump_style),
-        rounding_(plan.h5md_precision, plan.model.box_x, plan.model.box_y) {}
+        frame_files_(make_frame_files(plan, directory_)) {}
 
   int start() {
     write_file_atomically(directory_ / kResolvedScenarioFile, plan_.resolved_yaml);
     open_files();
-    if (rods_) rods_->append(std::string(metrics::kRodsCsvHeader) + "\n");
-    if (plan_.rods_h5md) {
-      h5md_ = std::make_unique<metrics::RodsH5mdWriter>(directory_ / kRodsH5mdFile, h5md_layout());
-    }
+    for (const auto& frames : frame_files_) frames->start();
     metrics_->append(observer_.csv_header() + "\n");
     if (schedule_.trajectory_steps > 0 && !plan_.model.walls.empty()) {
       write_file_atomically(directory_ / kWallsDumpFile, dump_.walls(plan_.model));
@@ -117,25 +104,20 @@ class RunSession {
       }
       file->truncate(recorded->second);
     }
-    std::uint64_t h5md_frames = 0;
-    if (plan_.rods_h5md) {
-      const auto recorded = checkpoint.file_frames.find(kRodsH5mdFile);
-      if (recorded == checkpoint.file_frames.end()) {
-        throw std::runtime_error("the checkpoint in " + directory_.string() +
-                                 " records no frame count for " + kRodsH5mdFile);
-      }
-      h5md_frames = recorded->second;
-    }
     simulation_.restore(checkpoint.state);
     prior_wall_s_ = checkpoint.wall_s;
     prior_cpu_s_ = checkpoint.cpu_s;
     sessions_ = checkpoint.sessions + 1;
     started_at_ = checkpoint.started_at;
-    replay_metrics(checkpoint.metrics_replay_offset, h5md_frames);
-    if (plan_.rods_h5md) {
-      // Opened after the replay, which reads the file on its own.
-      h5md_ = std::make_unique<metrics::RodsH5mdWriter>(directory_ / kRodsH5mdFile, h5md_layout(),
-                                                        h5md_frames);
+    // The metrics observer sees again the frames of its window, as the first file holds them;
+    // metrics.csv already has their rows.
+    const FrameFile::Visit refill = [this](const engine::Frame& stored, std::uint64_t position) {
+      remember_frame(stored.time, position);
+      observer_.observe(stored);
+    };
+    for (std::size_t f = 0; f < frame_files_.size(); ++f) {
+      frame_files_[f]->resume(checkpoint, checkpoint.metrics_replay_offset,
+                              f == 0 ? refill : FrameFile::Visit());
     }
     begin_session(true);
     log("rodsort: resuming %s at t = %g s of %g s in %s\n", plan_.name.c_str(), simulation_.time(),
@@ -156,28 +138,13 @@ class RunSession {
  private:
   struct FrameOffset {
     double time_s;
-    std::uint64_t offset;  ///< in rods.csv [bytes], or in rods.h5 [frames] without rods.csv
+    std::uint64_t position;  ///< in the first file of frames (FrameFile::position())
   };
 
-  metrics::H5mdLayout h5md_layout() const {
-    metrics::H5mdLayout layout;
-    layout.species_names = plan_.metrics.species_names;
-    for (const engine::RodInit& rod : plan_.model.rods) layout.rod_species.push_back(rod.species);
-    layout.box_x = plan_.model.box_x;
-    layout.box_y = plan_.model.box_y;
-    layout.box_z = plan_.model.drive.gap;
-    layout.walls = plan_.model.walls;
-    layout.scenario_yaml = plan_.resolved_yaml;
-    layout.precision = plan_.h5md_precision;
-    layout.creator_version = version();
-    return layout;
-  }
-
   /// The file the frames are read back from (rods.csv when the run writes it).
-  const char* frames_file() const { return plan_.rods_csv ? kRodsCsvFile : kRodsH5mdFile; }
+  const char* frames_file() const { return frame_files_.front()->name(); }
 
   void open_files() {
-    if (plan_.rods_csv) rods_ = std::make_unique<AppendFile>(directory_ / kRodsCsvFile);
     metrics_ = std::make_unique<AppendFile>(directory_ / kMetricsCsvFile);
     if (schedule_.trajectory_steps > 0) {
       trajectory_ = std::make_unique<AppendFile>(directory_ / kTrajectoryFile);
@@ -186,7 +153,6 @@ class RunSession {
 
   std::vector<AppendFile*> files() const {
     std::vector<AppendFile*> open = {metrics_.get()};
-    if (rods_) open.push_back(rods_.get());
     if (trajectory_) open.push_back(trajectory_.get());
     return open;
   }
@@ -276,7 +242,7 @@ class RunSession {
     if (frame_due) write_frame(frame, step);
     if (trajectory_due) trajectory_->append(dump_.format(frame, step));
     for (AppendFile* file : files()) file->sync();
-    if (h5md_) h5md_->commit();
+    for (const auto& frames : frame_files_) frames->sync();
   }
 
   int stop_on_signal(int signal_number, std::optional<ProgressReporter>& progress) {
@@ -308,50 +274,20 @@ class RunSession {
     if (schedule_.is_checkpoint(step)) write_checkpoint_now();
   }
 
-  /// Writes a frame to rods.csv and rods.h5, and feeds the metrics observer the frame as the first
-  /// of them holds it, so that `rodsort analyze` computes the same rows from that file.
+  /// Writes a frame to every file of frames, and feeds the metrics observer the frame as the
+  /// first of them holds it, so that `rodsort analyze` computes the same rows from that file.
   void write_frame(const engine::Frame& frame, std::int64_t step) {
-    std::optional<metrics::MetricsRow> row;
-    if (h5md_) {
-      const std::uint64_t index = h5md_->frames();
-      h5md_->write(frame, step);
-      if (!rods_) {
-        const engine::Frame stored = rounding_.stored(frame);
-        remember_frame(stored.time, index);
-        row = observer_.observe(stored);
-      }
+    const std::uint64_t position = frame_files_.front()->position();
+    const engine::Frame stored = frame_files_.front()->write(frame, step);
+    for (std::size_t f = 1; f < frame_files_.size(); ++f) frame_files_[f]->write(frame, step);
+    remember_frame(stored.time, position);
+    if (const auto row = observer_.observe(stored)) {
+      metrics_->append(observer_.csv_line(*row) + "\n");
     }
-    if (rods_) row = write_csv_frame(frame);
-    if (row) metrics_->append(observer_.csv_line(*row) + "\n");
   }
 
-  std::optional<metrics::MetricsRow> write_csv_frame(const engine::Frame& frame) {
-    frame_text_.str("");
-    metrics::RodsCsvWriter writer(frame_text_, plan_.metrics.species_names);
-    writer.write(frame);
-    const std::string text = frame_text_.str();
-    const std::uint64_t offset = rods_->size();
-    rods_->append(text);
-    return observe_stored(text, offset);
-  }
-
-  /// Feeds the observer one frame as rods.csv holds it, and remembers where the frame starts.
-  /// `first_line`: the line of rods.csv where the frame starts, for messages (0: not known).
-  std::optional<metrics::MetricsRow> observe_stored(const std::string& frame_text,
-                                                    std::uint64_t offset, long first_line = 0) {
-    std::istringstream in(std::string(metrics::kRodsCsvHeader) + "\n" + frame_text);
-    metrics::RodsCsvReader reader(in, kRodsCsvFile, plan_.metrics.species_names,
-                                  first_line > 0 ? first_line - 1 : 1);
-    engine::Frame stored;
-    if (!reader.next(stored)) {
-      throw std::runtime_error("cannot read back a frame of rods.csv: " + reader.error());
-    }
-    remember_frame(stored.time, offset);
-    return observer_.observe(stored);
-  }
-
-  void remember_frame(double time_s, std::uint64_t offset) {
-    recent_frames_.push_back({time_s, offset});
+  void remember_frame(double time_s, std::uint64_t position) {
+    recent_frames_.push_back({time_s, position});
     // Keep the latest frame at least one window and one frame older than the newest: a resumed
     // observer fed the frames from there on has every frame it would have kept.
     const double keep_after_s = time_s - plan_.metrics.window - plan_.frame_interval_s;
@@ -360,76 +296,22 @@ class RunSession {
     }
   }
 
-  /// Refills the metrics observer from rods.csv (from byte `offset` to the end) or, without it,
-  /// from rods.h5 (frames `offset` to `h5md_frames`), without writing rows (metrics.csv already
-  /// has them).
-  void replay_metrics(std::uint64_t offset, std::uint64_t h5md_frames) {
-    if (!rods_) {
-      const std::filesystem::path path = directory_ / kRodsH5mdFile;
-      metrics::RodsH5mdReader reader(path, plan_.metrics.species_names);
-      if (!reader.error().empty()) {
-        throw std::runtime_error("cannot read back rods.h5: " + reader.error());
-      }
-      if (offset > h5md_frames || h5md_frames > reader.frame_count()) {
-        throw std::runtime_error("the checkpoint points past the end of " + path.string());
-      }
-      reader.seek(offset);
-      engine::Frame stored;
-      for (std::uint64_t index = offset; index < h5md_frames && reader.next(stored); ++index) {
-        remember_frame(stored.time, index);
-        observer_.observe(stored);
-      }
-      if (!reader.error().empty()) {
-        throw std::runtime_error("cannot read back rods.h5: " + reader.error());
-      }
-      return;
-    }
-    const std::string text = read_file(rods_->path());
-    if (offset > text.size()) {
-      throw std::runtime_error("the checkpoint points past the end of " + rods_->path().string());
-    }
-    std::size_t frame_start = offset;
-    double frame_time = 0.0;
-    // Line numbers of the file, for messages about a damaged frame.
-    long line = 1 + static_cast<long>(std::count(text.begin(), text.begin() + offset, '\n'));
-    long frame_line = line;
-    for (std::size_t line_start = offset; line_start < text.size(); ++line) {
-      std::size_t line_end = text.find('\n', line_start);
-      line_end = line_end == std::string::npos ? text.size() : line_end + 1;
-      const double time = leading_time(std::string_view(text).substr(line_start));
-      if (line_start == frame_start) {
-        frame_time = time;
-      } else if (time != frame_time) {
-        observe_stored(text.substr(frame_start, line_start - frame_start), frame_start, frame_line);
-        frame_start = line_start;
-        frame_line = line;
-        frame_time = time;
-      }
-      line_start = line_end;
-    }
-    if (frame_start < text.size()) {
-      observe_stored(text.substr(frame_start), frame_start, frame_line);
-    }
-  }
-
   void write_checkpoint_now() {
     for (AppendFile* file : files()) file->sync();
-    if (h5md_) h5md_->commit();
     Checkpoint checkpoint;
     checkpoint.state = simulation_.state();
     for (AppendFile* file : files()) {
       checkpoint.file_bytes[file->path().filename().string()] = file->size();
     }
-    if (h5md_) checkpoint.file_frames[kRodsH5mdFile] = h5md_->frames();
+    for (const auto& frames : frame_files_) frames->record(checkpoint);
     checkpoint.wall_s = total_wall_s();
     checkpoint.cpu_s = total_cpu_s();
     checkpoint.sessions = sessions_;
     checkpoint.started_at = started_at_;
     checkpoint.scenario_fingerprint = engine::fingerprint(plan_.resolved_yaml);
     checkpoint.build = build_identity();
-    checkpoint.metrics_replay_offset = !recent_frames_.empty() ? recent_frames_.front().offset
-                                       : rods_                 ? rods_->size()
-                                                               : h5md_->frames();
+    checkpoint.metrics_replay_offset =
+        recent_frames_.empty() ? frame_files_.front()->position() : recent_frames_.front().position;
     write_checkpoint(directory_ / kCheckpointFile, checkpoint);
     last_checkpoint_step_ = simulation_.step_count();
     write_record(RunStatus::kRunning, "");
@@ -483,10 +365,8 @@ class RunSession {
   engine::Simulation simulation_;
   metrics::MetricsObserver observer_;
   LammpsDumpFormatter dump_;
-  metrics::H5mdRounding rounding_;
-  std::unique_ptr<AppendFile> rods_, metrics_, trajectory_;
-  std::unique_ptr<metrics::RodsH5mdWriter> h5md_;
-  std::ostringstream frame_text_;
+  std::unique_ptr<AppendFile> metrics_, trajectory_;
+  std::vector<std::unique_ptr<FrameFile>> frame_files_;  ///< the first feeds the metrics
   std::deque<FrameOffset> recent_frames_;
   std::size_t next_snapshot_ = 0;
   std::int64_t last_checkpoint_step_ = -1;
