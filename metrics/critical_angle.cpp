@@ -62,6 +62,20 @@ CriticalAngle critical_angle(std::vector<SweepPoint> points, int plateau_points)
       result.below = a.angle;
       result.above = b.angle;
       result.angle = a.angle + (a.eta - result.half) / (a.eta - b.eta) * (b.angle - a.angle);
+      // A trap that fills again beyond the drop: within the runs' length, whether a wide trap
+      // holds a pile is a matter of when one nucleates, and the drop is not where it seems.
+      for (std::size_t k = i + 2; k < points.size(); ++k) {
+        if (points[k].eta >= result.half) {
+          char text[240];
+          std::snprintf(text, sizeof text,
+                        "at %g, beyond theta_c, eta is %.3g, above half the plateau again: "
+                        "whether a wider trap fills within the runs depends on when a pile "
+                        "nucleates; run longer, or more seeds",
+                        points[k].angle, points[k].eta);
+          result.caution += (result.caution.empty() ? "" : "; ") + std::string(text);
+          break;
+        }
+      }
       return result;
     }
   }

@@ -4,8 +4,9 @@
 // at 125° in simulation). theta_c is where eta falls through half of that plateau.
 //
 // Only where the data bear it: fewer than plateau_points + 2 angles cannot show both a plateau
-// and a drop; a plateau below kMinPlateauEta is not a trap filling; and a theta_c from runs whose
-// eta at the smallest angles was still rising in the second half of the run comes with a caution.
+// and a drop; a plateau below kMinPlateauEta is not a trap filling; and a theta_c comes with a
+// caution when eta at the smallest angles was still rising in the second half of the runs, or when
+// eta at a wider angle beyond the drop is above half the plateau again.
 
 #include <limits>
 #include <string>

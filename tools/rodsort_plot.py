@@ -320,9 +320,16 @@ def critical_angle(points):
                            f"{duration:g} s): the plateau, and theta_c with it, may be too "
                            "low; run longer")
             break
-    for (a_angle, a_eta, _, _), (b_angle, b_eta, _, _) in zip(points, points[1:]):
+    for i, ((a_angle, a_eta, _, _), (b_angle, b_eta, _, _)) in enumerate(zip(points, points[1:])):
         if a_eta >= half and b_eta < half:
             angle = a_angle + (a_eta - half) / (a_eta - b_eta) * (b_angle - a_angle)
+            for wider, eta, _, _ in points[i + 2:]:
+                if eta >= half:
+                    caution += ("; " if caution else "") + (
+                        f"at {wider:g}, beyond theta_c, eta is {eta:.3g}, above half the plateau "
+                        "again: whether a wider trap fills within the runs depends on when a "
+                        "pile nucleates; run longer, or more seeds")
+                    break
             return {"angle": angle, "below": a_angle, "above": b_angle, "plateau": plateau,
                     "half": half, "caution": caution}, ""
     return None, f"eta never falls below half its low-angle plateau ({half:.3g})"
@@ -565,7 +572,12 @@ def plot_eta_theta(plt, sweep, out_dir, formats, written):
         if result:
             label += f": θc = {result['angle']:.1f}°"
             if result["caution"]:
-                label += " (unreliable: η still rising, see theta_c.csv)"
+                reasons = []
+                if "still rising" in result["caution"] or "never reached" in result["caution"]:
+                    reasons.append("η still rising")
+                if "beyond theta_c" in result["caution"]:
+                    reasons.append("a wider trap fills")
+                label += f" (unreliable: {', '.join(reasons)}; see theta_c.csv)"
             axes.axvline(result["angle"], color=line_colour, linestyle=":", linewidth=1.0)
         axes.errorbar([p[0] for p in curve], [p[1] for p in curve], yerr=[p[2] for p in curve],
                       color=line_colour, marker="o", markersize=4, linewidth=1.2, capsize=2,

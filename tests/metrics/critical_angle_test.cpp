@@ -71,3 +71,19 @@ TEST_CASE("theta_c only where the data bear it", "[metrics]") {
       critical_angle(rising).caution,
       Catch::Contains("at 60, eta never reached 90% of its final level in the runs (150 s)"));
 }
+
+TEST_CASE("theta_c is cautioned when a trap beyond the drop fills again", "[metrics]") {
+  // Seed 3 of the paper's system near the transition (docs/reproduction.md, section 1): no pile
+  // at 130 and 135 degrees, one at 140.
+  const std::vector<SweepPoint> seed3 = {{110, 0.909}, {115, 0.778}, {120, 0.506}, {125, 0.423},
+                                         {130, 0.065}, {135, 0.095}, {140, 0.803}};
+  const CriticalAngle result = critical_angle(seed3);
+  REQUIRE(result.found);
+  CHECK(result.angle == Approx(125.8).margin(0.1));
+  CHECK_THAT(result.caution, Catch::Contains("at 140, beyond theta_c, eta is 0.803, above half "
+                                             "the plateau again"));
+  // Without the pile at 140 degrees nothing is held against it.
+  std::vector<SweepPoint> monotonic = seed3;
+  monotonic.back().eta = 0.03;
+  CHECK(critical_angle(monotonic).caution.empty());
+}
