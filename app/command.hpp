@@ -17,6 +17,7 @@ Command add_run_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_analyze_command(CLI::App& app);
+Command add_convert_command(CLI::App& app);
 Command add_summarize_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_plot_command(CLI::App& app);

@@ -29,10 +29,11 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", runner::version());
   app.require_subcommand(1);
   const std::vector<app::Command> commands = {
-      app::add_run_command(app),     app::add_validate_command(app),  app::add_sweep_command(app),
-      app::add_analyze_command(app), app::add_summarize_command(app), app::add_render_command(app),
-      app::add_plot_command(app),    app::add_bench_command(app),
-      app::add_single_command(app),
+      app::add_run_command(app),     app::add_validate_command(app),
+      app::add_sweep_command(app),   app::add_analyze_command(app),
+      app::add_convert_command(app), app::add_summarize_command(app),
+      app::add_render_command(app),  app::add_plot_command(app),
+      app::add_bench_command(app),   app::add_single_command(app),
   };
   for (const app::Command& command : commands) command.subcommand->footer(kExitCodes);
   try {

@@ -123,17 +123,8 @@ class H5mdFrameFile : public FrameFile {
   H5mdFrameFile(const RunPlan& plan, const std::filesystem::path& directory)
       : species_names_(plan.metrics.species_names),
         path_(directory / kRodsH5mdFile),
-        rounding_(plan.h5md_precision, plan.model.box_x, plan.model.box_y) {
-    layout_.species_names = plan.metrics.species_names;
-    for (const engine::RodInit& rod : plan.model.rods) layout_.rod_species.push_back(rod.species);
-    layout_.box_x = plan.model.box_x;
-    layout_.box_y = plan.model.box_y;
-    layout_.box_z = plan.model.drive.gap;
-    layout_.walls = plan.model.walls;
-    layout_.scenario_yaml = plan.resolved_yaml;
-    layout_.precision = plan.h5md_precision;
-    layout_.creator_version = version();
-  }
+        layout_(h5md_layout(plan)),
+        rounding_(plan.h5md_precision, plan.model.box_x, plan.model.box_y) {}
 
   void start() override { writer_ = std::make_unique<metrics::RodsH5mdWriter>(path_, layout_); }
 
@@ -194,6 +185,20 @@ class H5mdFrameFile : public FrameFile {
 };
 
 }  // namespace
+
+metrics::H5mdLayout h5md_layout(const RunPlan& plan) {
+  metrics::H5mdLayout layout;
+  layout.species_names = plan.metrics.species_names;
+  for (const engine::RodInit& rod : plan.model.rods) layout.rod_species.push_back(rod.species);
+  layout.box_x = plan.model.box_x;
+  layout.box_y = plan.model.box_y;
+  layout.box_z = plan.model.drive.gap;
+  layout.walls = plan.model.walls;
+  layout.scenario_yaml = plan.resolved_yaml;
+  layout.precision = plan.h5md_precision;
+  layout.creator_version = version();
+  return layout;
+}
 
 std::vector<std::unique_ptr<FrameFile>> make_frame_files(const RunPlan& plan,
                                                          const std::filesystem::path& directory) {

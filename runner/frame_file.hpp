@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "engine/frame.hpp"
+#include "metrics/rods_h5md.hpp"
 #include "runner/checkpoint.hpp"
 #include "runner/run_plan.hpp"
 
@@ -41,6 +42,9 @@ class FrameFile {
   /// The file's name in the run directory.
   virtual const char* name() const = 0;
 };
+
+/// What rods.h5 records of a run besides its frames (species, box, walls, scenario).
+metrics::H5mdLayout h5md_layout(const RunPlan& plan);
 
 /// The run's files of frames, in the order of output.rods_format (rods.csv first when written).
 std::vector<std::unique_ptr<FrameFile>> make_frame_files(const RunPlan& plan,

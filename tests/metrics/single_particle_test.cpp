@@ -67,7 +67,7 @@ TEST_CASE("axial velocity is the speed toward the thin end, negative backward",
   for (const double v : back) CHECK_THAT(v, WithinAbs(-2.0, 1e-12));
 }
 
-TEST_CASE("lag statistics of a steady turn: ballistic MSD, cos correlation; D_r of a line",
+TEST_CASE("lag statistics of a steady turn: ballistic MSD, cos correlation, and D_r of a line",
           "[metrics][single]") {
   const double omega = 0.2;  // rad/s
   const metrics::Track track = steady_track(0.0, omega, 0.01, 500);

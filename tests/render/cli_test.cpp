@@ -78,7 +78,8 @@ TEST_CASE("rodsort render and plot refuse a directory that holds no run", "[rend
   CHECK_THAT(plotted.output, Catch::Contains("neither a run directory"));
 }
 
-TEST_CASE("rodsort plot draws a run's curves; rodsort render --movie its MP4", "[render][cli]") {
+TEST_CASE("rodsort plot draws a run's curves, and rodsort render --movie its MP4",
+          "[render][cli]") {
   const render::PythonLookup python = render::find_plot_python();
   if (!python.python) FAIL(python.error);
   if (!render::find_program("ffmpeg")) {

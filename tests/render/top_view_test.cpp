@@ -114,7 +114,7 @@ TEST_CASE("An SVG top view is written", "[render][top_view]") {
   CHECK(svg.rfind("</text>") < svg.rfind("</svg>"));
 }
 
-TEST_CASE("A top view for a figure leaves out the header; the scale bar is a round length",
+TEST_CASE("A top view for a figure leaves out the header, and the scale bar is a round length",
           "[render][top_view]") {
   const TestScene test;
   const render::ViewLayout with = render::layout_view(test.scene, {400});

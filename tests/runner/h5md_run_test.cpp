@@ -98,8 +98,9 @@ TEST_CASE("a run killed with SIGKILL leaves a readable rods.h5 and resumes exact
   }
 }
 
-TEST_CASE("rods_format both writes the same frames twice; render, analyze and plot read rods.h5",
-          "[runner][h5md]") {
+TEST_CASE(
+    "rods_format both writes the same frames twice, and render, analyze and plot read rods.h5",
+    "[runner][h5md]") {
   TempDirectory scratch;
   const auto run = scratch / "run";
   REQUIRE(run_rodsort({"run", kTiny, "-o", run.string(), "-q", "--set", "output.rods_format=both"},
@@ -136,4 +137,30 @@ TEST_CASE("rods_format both writes the same frames twice; render, analyze and pl
                   scratch.path());
   CHECK(plotted.status == kExitOk);
   CHECK(std::filesystem::exists(scratch / "plots" / "dtheta.png"));
+}
+
+TEST_CASE("convert writes a stopped run's rods.csv into rods.h5", "[runner][h5md]") {
+  TempDirectory scratch;
+  const auto run = scratch / "run";
+  REQUIRE(run_rodsort({"run", kTiny, "-o", run.string(), "-q"}, scratch.path()).status == kExitOk);
+  CHECK_FALSE(std::filesystem::exists(run / kRodsH5mdFile));
+  const auto converted = run_rodsort({"convert", run.string()}, scratch.path());
+  REQUIRE(converted.status == kExitOk);
+  CHECK_THAT(converted.err, Catch::Contains("11 frames of"));
+  const auto csv = rodsort::metrics::read_rods_csv(run / kRodsCsvFile);
+  const std::vector<Frame> h5 = read_h5md(run / kRodsH5mdFile);
+  REQUIRE(h5.size() == csv.frames.size());
+  for (std::size_t f = 0; f < h5.size(); ++f) {
+    CHECK(h5[f].time == csv.frames[f].time);
+    for (std::size_t i = 0; i < h5[f].rods.size(); ++i) {
+      CHECK((h5[f].rods[i].unwrapped - csv.frames[f].rods[i].unwrapped).norm() < 1e-5);
+      CHECK((h5[f].rods[i].axis - csv.frames[f].rods[i].axis).norm() < 1e-6);
+    }
+  }
+  // Once only; and only where there is a rods.csv.
+  CHECK(run_rodsort({"convert", run.string()}, scratch.path()).status == kExitUsage);
+  std::filesystem::remove(run / kRodsCsvFile);
+  const auto without = run_rodsort({"convert", run.string()}, scratch.path());
+  CHECK(without.status == kExitUsage);
+  CHECK_THAT(without.err, Catch::Contains("no scenario.resolved.yaml and rods.csv"));
 }

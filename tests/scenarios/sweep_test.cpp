@@ -53,7 +53,7 @@ TEST_CASE("a sweep expands to every combination of its axes", "[sweep]") {
         (folder / "angles.yaml").string() + ":3:17");
 }
 
-TEST_CASE("keys of one axis change together; the base may be inline", "[sweep]") {
+TEST_CASE("keys of one axis change together, and the base may be inline", "[sweep]") {
   const fs::path folder = scratch("zip");
   write(folder / "sizes.yaml",
         "name: sizes\n"
