@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <string>
 
+#include "metrics/rod_frames.hpp"
+
 namespace rodsort::runner {
 
 inline constexpr const char* kResolvedScenarioFile = "scenario.resolved.yaml";
-inline constexpr const char* kRodsCsvFile = "rods.csv";
-inline constexpr const char* kRodsH5mdFile = "rods.h5";
+inline constexpr const char* kRodsCsvFile = metrics::kRodsCsvName;
+inline constexpr const char* kRodsH5mdFile = metrics::kRodsH5mdName;
 inline constexpr const char* kMetricsCsvFile = "metrics.csv";
 inline constexpr const char* kTrajectoryFile = "trajectory.dump";
 inline constexpr const char* kWallsDumpFile = "walls.dump";  ///< the trap's walls, for viewers
