@@ -1,6 +1,5 @@
 #include "runner/analyze.hpp"
 
-#include <fstream>
 #include <ostream>
 
 #include "metrics/metrics_observer.hpp"

@@ -1,10 +1,10 @@
 #include "runner/convert.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <memory>
 #include <ostream>
 
-#include "metrics/rods_csv.hpp"
+#include "metrics/rod_frames.hpp"
 #include "metrics/rods_h5md.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/frame_file.hpp"
@@ -48,8 +48,9 @@ int convert_run(const ConvertRequest& request, std::ostream& err) {
   // Written under another name and renamed when complete: a conversion stopped half-way leaves
   // no rods.h5 that could be taken for the run's frames.
   const std::filesystem::path partial = directory / (std::string(kRodsH5mdFile) + ".partial");
-  std::ifstream in(rods);
-  metrics::RodsCsvReader reader(in, rods.string(), plan.metrics.species_names);
+  const std::unique_ptr<metrics::RodFrameReader> source =
+      metrics::open_rod_frames(rods, plan.metrics.species_names);
+  metrics::RodFrameReader& reader = *source;
   std::size_t frames = 0;
   {
     metrics::RodsH5mdWriter writer(partial, h5md_layout(plan));
