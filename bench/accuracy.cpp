@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <iostream>
 #include <ostream>
 #include <stdexcept>
 
@@ -230,7 +231,7 @@ AccuracyResult measure_accuracy(double dt, const AccuracyOptions& options) {
     cost.simulated_time = options.cost_time;
     cost.seed = options.seed;
     cost.solver_iterations = options.solver_iterations;
-    result.cost_319 = run_system("319", cost).cpu_per_simulated;
+    result.cost_319 = run_system("319", cost, std::cerr).cpu_per_simulated;
   }
   return result;
 }

@@ -6,10 +6,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <ostream>
 #include <stdexcept>
 
+#include "bench/filled_state.hpp"
 #include "bench/standard_system.hpp"
 #include "engine/simulation.hpp"
 
@@ -51,11 +53,23 @@ std::string format(const char* pattern, double value) {
 
 }  // namespace
 
+std::filesystem::path default_state_directory() {
+  if (const char* cache = std::getenv("XDG_CACHE_HOME"); cache != nullptr && *cache != '\0') {
+    return std::filesystem::path(cache) / "rodsort" / "bench";
+  }
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    return std::filesystem::path(home) / ".cache" / "rodsort" / "bench";
+  }
+  return "rodsort-bench-states";
+}
+
 void add_options(CLI::App& app, Options& options) {
   app.add_option("--systems", options.systems,
                  "systems to run, smallest first: single (one free rod), 319, 1276, 5104 (the "
                  "paper's trap system, side x1, x2, x4), 319-full, 1276-full, 5104-full (the "
-                 "same with the trap packed at the start)")
+                 "same with the trap packed at the start), 319-filled, 319-filled-x4, "
+                 "319-filled-x16 (the paper's system after its trap has filled, alone and in "
+                 "2 x 2 and 4 x 4 copies)")
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--dt", options.dt, "time step [s]")
@@ -76,10 +90,29 @@ void add_options(CLI::App& app, Options& options) {
       ->capture_default_str();
   app.add_option("--seed", options.seed, "seed of placement and noise")->capture_default_str();
   app.add_flag("--csv", options.csv, "print CSV instead of a table");
+  app.add_option("--state-dir", options.state_directory,
+                 "where the filled systems' state is kept, made once per seed, dt, solver "
+                 "iterations and fill time (default: $XDG_CACHE_HOME/rodsort/bench or "
+                 "~/.cache/rodsort/bench)");
+  app.add_option("--fill-time", options.fill_time,
+                 "simulated time that fills the trap of a filled system, from the packed start [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
 }
 
-Result run_system(const std::string& name, const Options& options) {
+Result run_system(const std::string& name, const Options& options, std::ostream& log) {
   const SystemSpec system = find_system(name);
+  engine::State filled;
+  if (system.filled_tiles > 0) {
+    FillOptions fill;
+    fill.directory =
+        options.state_directory.empty() ? default_state_directory() : options.state_directory;
+    fill.dt = options.dt;
+    fill.seed = options.seed;
+    fill.solver_iterations = options.solver_iterations;
+    fill.fill_time = options.fill_time;
+    filled = filled_paper_state(fill, log);
+  }
   const std::int64_t warmup_steps = std::llround(options.warmup / options.dt);
   const std::int64_t steps =
       std::max<std::int64_t>(1, std::llround(options.simulated_time / options.dt));
@@ -93,6 +126,10 @@ Result run_system(const std::string& name, const Options& options) {
     engine::Model model = build_model(system, options.dt, options.seed);
     model.solver_iterations = options.solver_iterations;
     engine::Simulation simulation(std::move(model));
+    if (system.filled_tiles > 0) {
+      const engine::Model one_cell = build_model(find_system("319-full"), options.dt, options.seed);
+      simulation.restore(tile_state(filled, one_cell, simulation.state(), system.filled_tiles));
+    }
     simulation.advance(warmup_steps);
     simulation.reset_counters();
     const double cpu_start = process_cpu_seconds();
@@ -122,16 +159,17 @@ Result run_system(const std::string& name, const Options& options) {
 namespace {
 
 constexpr const char* kTableHeader =
-    "system   rods        dt   steps    CPU [s]  CPU-s/sim-s  us/rod/step  kicks/rod/s  peak [MiB]"
+    "system           rods        dt   steps    CPU [s]  CPU-s/sim-s  us/rod/step  kicks/rod/s  "
+    "peak [MiB]"
     "  overlap [mm]";
 
 void write_row(std::ostream& out, const Result& r) {
   char line[160];
-  std::snprintf(line, sizeof line, "%-6s %6d %9.3g %7lld %10.3f %12.3f %12.3f %12lld %11.1f %13.3f",
-                r.system.c_str(), r.rods, r.dt, static_cast<long long>(r.steps), r.cpu_seconds,
-                r.cpu_per_simulated, r.us_per_rod_step,
-                static_cast<long long>(r.kicks_per_rod_second), r.peak_memory_mib,
-                r.deepest_overlap_mm);
+  std::snprintf(line, sizeof line,
+                "%-14s %6d %9.3g %7lld %10.3f %12.3f %12.3f %12lld %11.1f %13.3f", r.system.c_str(),
+                r.rods, r.dt, static_cast<long long>(r.steps), r.cpu_seconds, r.cpu_per_simulated,
+                r.us_per_rod_step, static_cast<long long>(r.kicks_per_rod_second),
+                r.peak_memory_mib, r.deepest_overlap_mm);
   out << line << '\n';
 }
 
@@ -159,11 +197,11 @@ void write_csv(std::ostream& out, const std::vector<Result>& results) {
   for (const Result& r : results) write_csv_row(out, r);
 }
 
-int run(const Options& options, std::ostream& out) {
+int run(const Options& options, std::ostream& out, std::ostream& log) {
   for (const std::string& name : options.systems) find_system(name);  // fail before running any
   out << (options.csv ? kCsvHeader : kTableHeader) << '\n' << std::flush;
   for (const std::string& name : options.systems) {
-    const Result result = run_system(name, options);
+    const Result result = run_system(name, options, log);
     if (options.csv) {
       write_csv_row(out, result);
     } else {

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <filesystem>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -26,7 +27,14 @@ struct Options {
   int solver_iterations = 10;   ///< engine::Model::solver_iterations
   std::uint64_t seed = 1;
   bool csv = false;
+  /// Where the filled systems' state is kept (bench/filled_state.hpp); default_state_directory().
+  std::filesystem::path state_directory;
+  double fill_time = 30.0;  ///< simulated time that fills the trap of a filled system [s]
 };
+
+/// $XDG_CACHE_HOME/rodsort/bench, or ~/.cache/rodsort/bench, or rodsort-bench-states in the
+/// working directory when neither variable is set.
+std::filesystem::path default_state_directory();
 
 struct Result {
   std::string system;
@@ -45,14 +53,16 @@ struct Result {
 /// Declares the benchmark's options on a CLI11 app or subcommand (rodsort_bench, `rodsort bench`).
 void add_options(CLI::App& app, Options& options);
 
-/// Runs one system: builds it, warms it up, measures it `options.repeats` times.
-Result run_system(const std::string& name, const Options& options);
+/// Runs one system: builds it (a filled system from its kept state, which is made first when it
+/// is not there yet, announced on `log`), warms it up, measures it `options.repeats` times.
+Result run_system(const std::string& name, const Options& options, std::ostream& log);
 
 void write_table(std::ostream& out, const std::vector<Result>& results);
 void write_csv(std::ostream& out, const std::vector<Result>& results);
 
 /// Runs every system of `options` in order, printing each row as soon as it is measured (a table,
-/// or CSV with --csv) to `out`. Returns a process exit status.
-int run(const Options& options, std::ostream& out);
+/// or CSV with --csv) to `out`, and what it does besides measuring (filling a trap) to `log`.
+/// Returns a process exit status.
+int run(const Options& options, std::ostream& out, std::ostream& log);
 
 }  // namespace rodsort::bench

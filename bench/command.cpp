@@ -1,5 +1,7 @@
 #include "bench/command.hpp"
 
+#include <iostream>
+
 namespace rodsort::bench {
 
 void add_command_options(CLI::App& app, CommandOptions& command) {
@@ -8,7 +10,7 @@ void add_command_options(CLI::App& app, CommandOptions& command) {
 }
 
 int run_command(CommandOptions& command, std::ostream& out) {
-  if (!command.accuracy_selected) return run(command.options, out);
+  if (!command.accuracy_selected) return run(command.options, out, std::cerr);
   command.accuracy.seed = command.options.seed;
   command.accuracy.csv = command.options.csv;
   command.accuracy.solver_iterations = command.options.solver_iterations;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bench/filled_state.hpp"
 #include "bench/lattice_placement.hpp"
 #include "engine/random_stream.hpp"
 #include "engine/rod_shape.hpp"
@@ -20,6 +21,12 @@ std::vector<SystemSpec> standard_systems() {
       systems.push_back({std::to_string(rods) + (full ? "-full" : ""), rods, kPaperBox * scale,
                          kPaperArm * scale, full});
     }
+  }
+  for (const int tiles : {1, 2, 4}) {
+    const int rods = 319 * tiles * tiles;
+    systems.push_back(
+        {"319-filled" + (tiles == 1 ? std::string() : "-x" + std::to_string(rods / 319)), rods,
+         kPaperBox * tiles, kPaperArm, true, tiles});
   }
   return systems;
 }
@@ -89,6 +96,9 @@ engine::Species rod_a_species(double kick_eps) {
 }
 
 engine::Model build_model(const SystemSpec& system, double dt, std::uint64_t seed) {
+  if (system.filled_tiles > 0) {
+    return tile_model(build_model(find_system("319-full"), dt, seed), system.filled_tiles);
+  }
   engine::Model model;
   model.box_x = system.box;
   model.box_y = system.box;

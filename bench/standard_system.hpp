@@ -12,6 +12,10 @@
 // nearly all its time in. Rods are packed into the trap from the apex, in rows across the bisector,
 // each pointing its thin end at the apex, as many as fit with the placement clearance (about two
 // thirds of the rods); the others go on the lattice outside.
+//
+// "-filled" systems are the paper's system after its trap has filled by the rods' own motion
+// (bench/filled_state.hpp), alone (319-filled) or as 2 x 2 and 4 x 4 copies side by side, each
+// with its trap (319-filled-x4, 319-filled-x16).
 
 #include <cstdint>
 #include <string>
@@ -27,6 +31,9 @@ struct SystemSpec {
   double box;        ///< side of the periodic square cell [mm]
   double trap_arm;   ///< arm length of the V trap, 0 for no trap [mm]
   bool full_trap = false;  ///< rods packed into the trap at the start
+  /// Copies per side of the filled paper system (bench/filled_state.hpp); 0 for a system built
+  /// from its placement alone.
+  int filled_tiles = 0;
 };
 
 /// The paper's cell side, 19.3 rod lengths [mm].
@@ -43,8 +50,9 @@ inline constexpr double kPaperKickEps = 0.01;
 /// Rod A of brass with the collision kick `kick_eps` [1/mm].
 engine::Species rod_a_species(double kick_eps);
 
-/// single, the paper's system with side x1, x2, x4 (319, 1,276, 5,104 rods), then the same three
-/// with a full trap (319-full, 1276-full, 5104-full).
+/// single, the paper's system with side x1, x2, x4 (319, 1,276, 5,104 rods), the same three with
+/// a full trap (319-full, 1276-full, 5104-full), then the filled paper system in 1, 2 x 2 and
+/// 4 x 4 copies (319-filled, 319-filled-x4, 319-filled-x16).
 std::vector<SystemSpec> standard_systems();
 
 /// The standard system of that name; throws std::invalid_argument naming the known ones.
@@ -52,7 +60,9 @@ SystemSpec find_system(const std::string& name);
 
 /// The model of a system: the paper's drive and materials, rod A with the paper's kick, the trap
 /// centred in the cell, rods on a jittered lattice outside the walls with random headings (all
-/// drawn from `seed`). Throws std::runtime_error if the rods cannot be placed.
+/// drawn from `seed`). For a filled system, the packed-trap system 319-full tiled: the model its
+/// filled state (bench/filled_state.hpp) is restored into. Throws std::runtime_error if the rods
+/// cannot be placed.
 engine::Model build_model(const SystemSpec& system, double dt, std::uint64_t seed);
 
 }  // namespace rodsort::bench

@@ -33,13 +33,14 @@ double gap(const engine::Model& model, const engine::RodInit& a, const engine::R
 
 TEST_CASE("standard systems keep the paper's density and trap", "[bench]") {
   const auto systems = standard_systems();
-  REQUIRE(systems.size() == 7);
+  REQUIRE(systems.size() == 10);
   CHECK(find_system("319").box == Approx(86.85));
   for (const SystemSpec& system : systems) {
     if (system.name == "single") continue;
     const double scale = system.box / kPaperBox;
     CHECK(system.rod_count == Approx(319 * scale * scale));
-    CHECK(system.trap_arm == Approx(kPaperArm * scale));
+    // Filled systems are copies of the paper's system, each with its own trap.
+    CHECK(system.trap_arm == Approx(kPaperArm * (system.filled_tiles > 0 ? 1.0 : scale)));
   }
   CHECK_THROWS_WITH(find_system("320"), Catch::Contains("319"));
 }
