@@ -28,6 +28,10 @@ struct BodyTag {
   int shift = -1;                ///< periodic shift index for kImage
   int wall = -1;                 ///< wall index for kWall
   const PlateRoughness* roughness = nullptr;  ///< kBase and kLid: the surface, null when flat
+  /// kRod and kImage: a bound on how far any sphere centre of the rod has moved since the world
+  /// was built [mm], summed step by step; null where nobody keeps it. The rod-rod algorithm skips
+  /// a pair whose gap the two rods cannot yet have closed (rod_rod_collision.cpp).
+  const double* travel = nullptr;
 };
 
 /// Every collision object of a simulation carries this mark in its user index 3 beside its tag, so

@@ -26,7 +26,9 @@ btDefaultCollisionConstructionInfo RodCollisionDispatch::configuration_info() {
 }
 
 RodCollisionDispatch::RodCollisionDispatch(btCollisionDispatcher& dispatcher,
-                                           const RestoredContacts* restored) {
+                                           const RestoredContacts* restored,
+                                           std::int64_t* rod_pairs_skipped) {
+  rod_rod_.skipped = rod_pairs_skipped;
   rod_box_.rod_is_body0 = true;
   box_rod_.rod_is_body0 = false;
   rod_box_.restored = restored;
@@ -35,6 +37,7 @@ RodCollisionDispatch::RodCollisionDispatch(btCollisionDispatcher& dispatcher,
   dispatcher.registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, COMPOUND_SHAPE_PROXYTYPE, &box_rod_);
   dispatcher.registerCollisionCreateFunc(COMPOUND_SHAPE_PROXYTYPE, COMPOUND_SHAPE_PROXYTYPE,
                                          &rod_rod_);
+  dispatcher.setNearCallback(&near_callback);
 }
 
 btCollisionAlgorithm* RodCollisionDispatch::RodBox::CreateCollisionAlgorithm(
@@ -59,7 +62,21 @@ btCollisionAlgorithm* RodCollisionDispatch::RodRod::CreateCollisionAlgorithm(
     btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* /*body0*/,
     const btCollisionObjectWrapper* /*body1*/) {
   void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodRodCollision));
-  return new (memory) RodRodCollision(info);
+  return new (memory) RodRodCollision(info, skipped);
+}
+
+void RodCollisionDispatch::near_callback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
+                                         const btDispatcherInfo& info) {
+  const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+  const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+  // Two compounds are two rods (or a rod and an image), and their algorithm is a RodRodCollision.
+  if (pair.m_algorithm != nullptr &&
+      a->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE &&
+      b->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE &&
+      static_cast<RodRodCollision*>(pair.m_algorithm)->skips(*a, *b)) {
+    return;
+  }
+  btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
 }
 
 }  // namespace rodsort::engine

@@ -7,7 +7,11 @@
 #include <BulletCollision/CollisionDispatch/btCollisionCreateFunc.h>
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 
+#include <cstdint>
+
 class btCollisionDispatcher;
+struct btBroadphasePair;
+struct btDispatcherInfo;
 
 namespace rodsort::engine {
 
@@ -21,13 +25,20 @@ class RodCollisionDispatch {
 
   /// Registers the algorithms with `dispatcher`; this object must outlive the dispatcher's use.
   /// A rod-plate or rod-wall algorithm, when it is created, takes its pair's manifolds from
-  /// `restored` (null: none), which must outlive the dispatcher's use too.
-  RodCollisionDispatch(btCollisionDispatcher& dispatcher, const RestoredContacts* restored);
+  /// `restored` (null: none), which must outlive the dispatcher's use too. Rod-rod algorithms count
+  /// the pair tests they skip in `*rod_pairs_skipped` (null: not counted).
+  RodCollisionDispatch(btCollisionDispatcher& dispatcher, const RestoredContacts* restored,
+                       std::int64_t* rod_pairs_skipped = nullptr);
 
   RodCollisionDispatch(const RodCollisionDispatch&) = delete;
   RodCollisionDispatch& operator=(const RodCollisionDispatch&) = delete;
 
  private:
+  /// Bullet's default near callback, except that a pair of rods still apart (RodRodCollision::
+  /// skips) returns at once, before Bullet wraps the two objects and makes a result for them.
+  static void near_callback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
+                            const btDispatcherInfo& info);
+
   /// A rod (compound) against a box: a plate or a wall, told apart by the box's BodyTag.
   struct RodBox : btCollisionAlgorithmCreateFunc {
     bool rod_is_body0 = true;
@@ -37,6 +48,7 @@ class RodCollisionDispatch {
                                                    const btCollisionObjectWrapper* body1) override;
   };
   struct RodRod : btCollisionAlgorithmCreateFunc {
+    std::int64_t* skipped = nullptr;
     btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
                                                    const btCollisionObjectWrapper* body0,
                                                    const btCollisionObjectWrapper* body1) override;

@@ -19,6 +19,10 @@ RodGeometry::RodGeometry(const RodShape& shape) {
     axial_min = std::min(axial_min, sphere.axial);
     axial_max = std::max(axial_max, sphere.axial);
   }
+  ascending = std::is_sorted(axial.begin(), axial.end());
+  if (axial_max > axial_min) {
+    inverse_spacing = static_cast<double>(axial.size() - 1) / (axial_max - axial_min);
+  }
   axial_center = 0.5 * (axial_min + axial_max);
   for (const Sphere& sphere : shape.spheres) {
     bounding_radius =

@@ -2,6 +2,8 @@
 
 #include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 class btPersistentManifold;
@@ -12,8 +14,9 @@ namespace rodsort::engine {
 /// bounding-capsule test; see rod_rod_collision.cpp.
 class RodRodCollision : public btCollisionAlgorithm {
  public:
-  explicit RodRodCollision(const btCollisionAlgorithmConstructionInfo& info)
-      : btCollisionAlgorithm(info) {}
+  /// Counts the steps it skips a pair on in `*skipped` (null: not counted).
+  RodRodCollision(const btCollisionAlgorithmConstructionInfo& info, std::int64_t* skipped)
+      : btCollisionAlgorithm(info), skipped_(skipped) {}
   ~RodRodCollision() override;
 
   void processCollision(const btCollisionObjectWrapper* body0,
@@ -25,10 +28,18 @@ class RodRodCollision : public btCollisionAlgorithm {
   }
   void getAllContactManifolds(btManifoldArray& manifolds) override;
 
+  /// Whether the pair of `a` and `b` (this algorithm's two rods) is skipped at this step: they
+  /// were apart at the last test by more than they have travelled since. Counts the skip.
+  bool skips(const btCollisionObject& a, const btCollisionObject& b);
+
  private:
   void release_from(std::size_t first);
 
   std::vector<btPersistentManifold*> manifolds_;  ///< filled four points each, cleared every step
+  /// The pair is skipped while the two rods' BodyTag::travel sum stays below this [mm]: they were
+  /// apart by more than that can close (NaN: test at the next step).
+  double skip_below_travel_ = std::numeric_limits<double>::quiet_NaN();
+  std::int64_t* skipped_;
 };
 
 }  // namespace rodsort::engine

@@ -125,6 +125,11 @@ struct Simulation::Impl {
   std::vector<double> kick_eps, white_noise_step;  ///< per rod
   std::vector<double> noise_angle, noise_rate;     ///< per rod, the white noise of this step
   std::vector<char> noise_turned;                  ///< per rod: the solver applied noise_rate
+  /// Per rod: BodyTag::travel, the pose it was last brought up to date at, and the distance of
+  /// the farthest sphere centre from the centre of mass [mm].
+  std::vector<double> travel;
+  std::vector<btTransform> travel_pose;
+  std::vector<double> axial_reach;
   double thinnest_radius = 0.0;                    ///< of any rod's spheres [mm]
   /// No contact shallower than this can be too deep: the thinnest radius and the thinnest
   /// sphere's, wall's or plate's reach [mm].
@@ -239,7 +244,8 @@ struct Simulation::Impl {
         RodCollisionDispatch::configuration_info());
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
     restored_contacts.assign(state.contacts);
-    rod_collision = std::make_unique<RodCollisionDispatch>(*dispatcher, &restored_contacts);
+    rod_collision = std::make_unique<RodCollisionDispatch>(*dispatcher, &restored_contacts,
+                                                           &counters.rod_pair_tests_skipped);
     broadphase = std::make_unique<btDbvtBroadphase>();
     overlap_filter = std::make_unique<PeriodicOverlapFilter>();
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(overlap_filter.get());
@@ -313,10 +319,19 @@ struct Simulation::Impl {
     rod_tags.clear();
     rod_tags.reserve(rod_count);
     rods.clear();
+    travel.assign(rod_count, 0.0);  // never resized while the world stands: tags point into it
+    travel_pose.clear();
+    axial_reach.clear();
     for (std::size_t i = 0; i < rod_count; ++i) {
       const RodState& rs = state.rods[i];
       const Species& species = model.species[static_cast<std::size_t>(model.rods[i].species)];
       rod_tags.push_back({BodyKind::kRod, species.material, &model.materials, static_cast<int>(i)});
+      if (!model.test_every_rod_pair) rod_tags.back().travel = &travel[i];
+      double reach = 0.0;
+      for (const Sphere& sphere : species.shape.spheres) {
+        reach = std::max(reach, std::abs(sphere.axial));
+      }
+      axial_reach.push_back(reach);
       btCompoundShape* shape = rod_shapes[static_cast<std::size_t>(model.rods[i].species)].get();
       btRigidBody::btRigidBodyConstructionInfo info_rod(species.shape.mass, nullptr, shape);
       auto body = std::make_unique<btRigidBody>(info_rod);
@@ -331,6 +346,7 @@ struct Simulation::Impl {
       const btTransform transform(to_bullet(rs.basis), to_bullet(rs.position));
       body->setWorldTransform(transform);
       body->setInterpolationWorldTransform(transform);
+      travel_pose.push_back(transform);
       body->setLinearVelocity(to_bullet(rs.velocity));
       body->setAngularVelocity(to_bullet(rs.angular_velocity));
       body->setInterpolationLinearVelocity(to_bullet(rs.velocity));
@@ -347,6 +363,7 @@ struct Simulation::Impl {
       for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
         image_tags.push_back({BodyKind::kImage, rod_tags[i].material, &model.materials,
                               static_cast<int>(i), s});
+        image_tags.back().travel = rod_tags[i].travel;
         auto image = std::make_unique<btCollisionObject>();
         image->setCollisionShape(rods[i]->getCollisionShape());
         attach_tag(*image, image_tags.back());
@@ -433,6 +450,13 @@ struct Simulation::Impl {
         image_count[i][0] += crossed[0];
         image_count[i][1] += crossed[1];
       }
+      // A sphere centre at a on the axis moves by the centre's move plus a times the axis's: the
+      // sum bounds every sphere's, and an image's (a wrap moves it with its rod).
+      const btTransform& last = travel_pose[i];
+      travel[i] += (transform.getOrigin() - last.getOrigin()).length() +
+                   (transform.getBasis().getColumn(0) - last.getBasis().getColumn(0)).length() *
+                       axial_reach[i];
+      travel_pose[i] = transform;
       const bool near_edge = cell.near_edge(transform.getOrigin().x(), transform.getOrigin().y());
       for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
         const std::size_t k = i * PeriodicCell::kShiftCount + static_cast<std::size_t>(s);

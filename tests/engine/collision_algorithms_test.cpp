@@ -216,3 +216,27 @@ TEST_CASE("rod-wall contacts are those Bullet's GJK finds", "[engine][collision]
   }
   CHECK(touching > 500);
 }
+
+TEST_CASE("the spheres near a point of the axis are those std::lower_bound and upper_bound find",
+          "[engine][collision]") {
+  // Rod A's spheres are evenly spaced, RnT's are not (two halves, two spacings).
+  for (const RodProfile& profile : {preset_a_profile(), preset_rnt_profile()}) {
+    const RodGeometry geometry(make_rod_shape(profile, rodsort::kBrassDensity));
+    REQUIRE(geometry.ascending);
+    const auto& axial = geometry.axial;
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> along(geometry.axial_min - 1.0,
+                                                 geometry.axial_max + 1.0);
+    std::vector<double> points(axial.begin(), axial.end());  // the centres themselves, exactly
+    for (int k = 0; k < 2000; ++k) points.push_back(along(random));
+    for (const double x : points) {
+      INFO("x = " << x);
+      CHECK(geometry.first_at_or_beyond(x) ==
+            static_cast<std::size_t>(std::lower_bound(axial.begin(), axial.end(), x) -
+                                     axial.begin()));
+      CHECK(geometry.first_beyond(x) ==
+            static_cast<std::size_t>(std::upper_bound(axial.begin(), axial.end(), x) -
+                                     axial.begin()));
+    }
+  }
+}
