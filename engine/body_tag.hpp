@@ -9,6 +9,7 @@
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "engine/materials.hpp"
 #include "engine/plate_roughness.hpp"
@@ -29,8 +30,8 @@ struct BodyTag {
   int wall = -1;                 ///< wall index for kWall
   const PlateRoughness* roughness = nullptr;  ///< kBase and kLid: the surface, null when flat
   /// kRod and kImage: a bound on how far any sphere centre of the rod has moved since the world
-  /// was built [mm], summed step by step; null where nobody keeps it. The rod-rod algorithm skips
-  /// a pair whose gap the two rods cannot yet have closed (rod_rod_collision.cpp).
+  /// was built [mm], summed step by step; null where nobody keeps it. The rod-rod and rod-wall
+  /// algorithms skip a pair whose gap the rods cannot yet have closed (rod_rod_collision.cpp).
   const double* travel = nullptr;
 };
 
@@ -43,6 +44,17 @@ inline void attach_tag(btCollisionObject& object, BodyTag& tag) {
   object.setUserPointer(&tag);
   object.setUserIndex3(kBodyTagMark);
 }
+
+/// BodyTag::travel of a rod or an image; NaN where none is kept, so that every comparison with it
+/// fails and nothing is skipped.
+inline double travel_of(const btCollisionObject& object) {
+  if (object.getUserIndex3() != kBodyTagMark) return std::numeric_limits<double>::quiet_NaN();
+  const auto* tag = static_cast<const BodyTag*>(object.getUserPointer());
+  return tag->travel != nullptr ? *tag->travel : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// Taken off every gap before a pair is skipped on it, for the rounding of gaps and travels [mm].
+constexpr double kTravelMargin = 1e-7;
 
 /// Makes Bullet combine friction and restitution of two tagged bodies by looking the pair up in
 /// their material table instead of multiplying per-body values; contacts of bodies without the

@@ -77,9 +77,10 @@ struct Model {
   /// A diagnostic for tests: the solver takes every contact island in one call instead of batch by
   /// batch (solver_batches.cpp); with fixed_sweep_order the results must be bit for bit the same.
   bool single_solver_batch = false;
-  /// A diagnostic for tests: every pair of rods the broadphase finds is tested at every step, none
-  /// skipped for being apart (rod_rod_collision.cpp); the results must be bit for bit the same.
-  bool test_every_rod_pair = false;
+  /// A diagnostic for tests: every pair of rods, and of a rod and a wall, that the broadphase finds
+  /// is tested at every step, none skipped for being apart (rod_rod_collision.cpp); the results
+  /// must be bit for bit the same.
+  bool test_every_pair = false;
   /// A diagnostic for the benchmark: each batch of contacts is solved exactly, as one linear
   /// complementarity problem with box friction (Bullet's MLCP solver, Dantzig's algorithm), instead
   /// of by ten sweeps; a problem it cannot solve falls back to the sweeps and is counted

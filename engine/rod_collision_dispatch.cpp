@@ -27,8 +27,10 @@ btDefaultCollisionConstructionInfo RodCollisionDispatch::configuration_info() {
 
 RodCollisionDispatch::RodCollisionDispatch(btCollisionDispatcher& dispatcher,
                                            const RestoredContacts* restored,
-                                           std::int64_t* rod_pairs_skipped) {
-  rod_rod_.skipped = rod_pairs_skipped;
+                                           std::int64_t* pairs_skipped) {
+  rod_rod_.skipped = pairs_skipped;
+  rod_box_.skipped = pairs_skipped;
+  box_rod_.skipped = pairs_skipped;
   rod_box_.rod_is_body0 = true;
   box_rod_.rod_is_body0 = false;
   rod_box_.restored = restored;
@@ -52,7 +54,7 @@ btCollisionAlgorithm* RodCollisionDispatch::RodBox::CreateCollisionAlgorithm(
                : std::span<const SurfaceContactState>();
   if (tag->kind == BodyKind::kWall) {
     void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodWallCollision));
-    return new (memory) RodWallCollision(info, rod, box, rod_is_body0, saved);
+    return new (memory) RodWallCollision(info, rod, box, rod_is_body0, saved, skipped);
   }
   void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodPlateCollision));
   return new (memory) RodPlateCollision(info, rod, box, rod_is_body0, saved);
@@ -69,12 +71,20 @@ void RodCollisionDispatch::near_callback(btBroadphasePair& pair, btCollisionDisp
                                          const btDispatcherInfo& info) {
   const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
   const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-  // Two compounds are two rods (or a rod and an image), and their algorithm is a RodRodCollision.
-  if (pair.m_algorithm != nullptr &&
-      a->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE &&
-      b->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE &&
-      static_cast<RodRodCollision*>(pair.m_algorithm)->skips(*a, *b)) {
-    return;
+  // Two compounds are two rods (or a rod and an image), and their algorithm is a RodRodCollision;
+  // a compound and a wall's box have a RodWallCollision.
+  if (pair.m_algorithm != nullptr) {
+    const bool rod_a = a->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
+    const bool rod_b = b->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
+    if (rod_a && rod_b) {
+      if (static_cast<RodRodCollision*>(pair.m_algorithm)->skips(*a, *b)) return;
+    } else if (rod_a != rod_b) {
+      const auto* box = static_cast<const BodyTag*>((rod_a ? b : a)->getUserPointer());
+      if (box->kind == BodyKind::kWall &&
+          static_cast<RodWallCollision*>(pair.m_algorithm)->skips(rod_a ? *a : *b)) {
+        return;
+      }
+    }
   }
   btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
 }

@@ -25,17 +25,18 @@ class RodCollisionDispatch {
 
   /// Registers the algorithms with `dispatcher`; this object must outlive the dispatcher's use.
   /// A rod-plate or rod-wall algorithm, when it is created, takes its pair's manifolds from
-  /// `restored` (null: none), which must outlive the dispatcher's use too. Rod-rod algorithms count
-  /// the pair tests they skip in `*rod_pairs_skipped` (null: not counted).
+  /// `restored` (null: none), which must outlive the dispatcher's use too. Rod-rod and rod-wall
+  /// algorithms count the tests they skip in `*pairs_skipped` (null: not counted).
   RodCollisionDispatch(btCollisionDispatcher& dispatcher, const RestoredContacts* restored,
-                       std::int64_t* rod_pairs_skipped = nullptr);
+                       std::int64_t* pairs_skipped = nullptr);
 
   RodCollisionDispatch(const RodCollisionDispatch&) = delete;
   RodCollisionDispatch& operator=(const RodCollisionDispatch&) = delete;
 
  private:
-  /// Bullet's default near callback, except that a pair of rods still apart (RodRodCollision::
-  /// skips) returns at once, before Bullet wraps the two objects and makes a result for them.
+  /// Bullet's default near callback, except that a pair of rods, or a rod and a wall, still apart
+  /// (RodRodCollision::skips, RodWallCollision::skips) returns at once, before Bullet wraps the
+  /// two objects and makes a result for them.
   static void near_callback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
                             const btDispatcherInfo& info);
 
@@ -43,6 +44,7 @@ class RodCollisionDispatch {
   struct RodBox : btCollisionAlgorithmCreateFunc {
     bool rod_is_body0 = true;
     const RestoredContacts* restored = nullptr;
+    std::int64_t* skipped = nullptr;
     btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
                                                    const btCollisionObjectWrapper* body0,
                                                    const btCollisionObjectWrapper* body1) override;

@@ -53,15 +53,6 @@ constexpr double kRoundingArea = 1e-12;
 /// longer. The filled paper system takes the fewest instructions from 0.05 to 0.2 mm (callgrind,
 /// docs/performance.md), 4% more at 0.02.
 constexpr double kSkin = 0.1;
-/// Taken off every gap before it is used to skip, for the rounding of gaps and travels [mm].
-constexpr double kTravelMargin = 1e-7;
-
-/// BodyTag::travel of a rod or an image; NaN (never skipped) where none is kept.
-double travel_of(const btCollisionObject& object) {
-  if (object.getUserIndex3() != kBodyTagMark) return std::numeric_limits<double>::quiet_NaN();
-  const auto* tag = static_cast<const BodyTag*>(object.getUserPointer());
-  return tag->travel != nullptr ? *tag->travel : std::numeric_limits<double>::quiet_NaN();
-}
 
 }  // namespace
 

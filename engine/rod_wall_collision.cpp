@@ -17,6 +17,11 @@
 // its sphere is within that distance, where Bullet kept one, mostly empty, for every sphere inside
 // the wall's bounding box (some 700 of them in the paper's system), so the solver meets the
 // contacts in another order.
+//
+// A rod with no sphere within the contact-breaking distance gives the gap by which it stays out of
+// it, and the pair is not tested again until the rod has travelled that far (BodyTag::travel; the
+// wall does not move): a skipped test is one that would have made nothing, as for rod pairs
+// (rod_rod_collision.cpp).
 #include "engine/rod_wall_collision.hpp"
 
 #include <BulletCollision/BroadphaseCollision/btDispatcher.h>
@@ -27,6 +32,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/body_tag.hpp"
 #include "engine/rod_geometry.hpp"
@@ -37,7 +43,8 @@ namespace rodsort::engine {
 RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& info,
                                    const btCollisionObjectWrapper* rod,
                                    const btCollisionObjectWrapper* wall, bool rod_is_body0,
-                                   std::span<const SurfaceContactState> restored)
+                                   std::span<const SurfaceContactState> restored,
+                                   std::int64_t* skipped)
     : btCollisionAlgorithm(info),
       rod_is_body0_(rod_is_body0),
       // As new_manifold sets it.
@@ -46,7 +53,8 @@ RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& i
                        kContactBreakingFactor),
                    wall->getCollisionObject()->getCollisionShape()->getContactBreakingThreshold(
                        kContactBreakingFactor))),
-      manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr) {
+      manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr),
+      skipped_(skipped) {
   restore_sphere_manifolds(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject(),
                            restored, manifolds_);
 }
@@ -61,12 +69,26 @@ void RodWallCollision::release(btPersistentManifold*& manifold) {
   manifold = nullptr;
 }
 
+bool RodWallCollision::skips(const btCollisionObject& rod) {
+  if (!(travel_of(rod) < skip_below_travel_)) return false;
+  if (skipped_ != nullptr) ++*skipped_;
+  return true;
+}
+
 void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
                                         const btCollisionObjectWrapper* body1,
                                         const btDispatcherInfo& /*dispatch_info*/,
                                         btManifoldResult* result) {
   const btCollisionObjectWrapper* rod = rod_is_body0_ ? body0 : body1;
   const btCollisionObjectWrapper* wall = rod_is_body0_ ? body1 : body0;
+  if (skips(*rod->getCollisionObject())) return;  // out of reach at the last test, and since
+  const double travel = travel_of(*rod->getCollisionObject());
+  // Every manifold released and every sphere `gap` (> 0) beyond reach: skip until the rod has
+  // travelled that far.
+  const auto apart_by = [this, travel](double gap) {
+    skip_below_travel_ = gap > kTravelMargin ? travel + (gap - kTravelMargin)
+                                             : std::numeric_limits<double>::quiet_NaN();
+  };
   const RodGeometry& geometry = RodGeometry::of(*rod->getCollisionShape());
   const btTransform& pose = rod->getWorldTransform();
   const btVector3 axis = pose.getBasis().getColumn(0);
@@ -79,16 +101,20 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
   const btVector3 end0 = wall_pose.invXform(axis * geometry.axial_min + pose.getOrigin());
   const btVector3 end1 = wall_pose.invXform(axis * geometry.axial_max + pose.getOrigin());
   const double reach = geometry.max_radius + margin + breaking_threshold_;
-  bool apart = false;
+  // Apart along some axis of the wall's frame by `separation` > 0: every sphere's distance from
+  // the wall exceeds the breaking distance by at least that.
+  double separation = -std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
-    apart = apart || std::min(end0[k], end1[k]) - reach > core[k] ||
-            std::max(end0[k], end1[k]) + reach < -core[k];
+    separation = std::max({separation, std::min(end0[k], end1[k]) - reach - core[k],
+                           -core[k] - (std::max(end0[k], end1[k]) + reach)});
   }
-  if (apart) {
+  if (separation > 0.0) {
     for (btPersistentManifold*& manifold : manifolds_) release(manifold);
+    apart_by(separation);
     return;
   }
 
+  double gap = std::numeric_limits<double>::infinity();  // the least of depth - breaking distance
   for (std::size_t i = 0; i < manifolds_.size(); ++i) {
     const btVector3 center = wall_pose.invXform(axis * geometry.axial[i] + pose.getOrigin());
     btVector3 closest(std::clamp(center.x(), -core.x(), core.x()),
@@ -114,6 +140,7 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
     }
     const double depth = centre_distance - margin - geometry.radius[i];
     btPersistentManifold*& manifold = manifolds_[i];
+    gap = std::min(gap, depth - breaking_threshold_);
     if (depth > breaking_threshold_) {
       release(manifold);
       continue;
@@ -123,6 +150,7 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
                        wall->getCollisionObject(), rod_is_body0_, static_cast<int>(i), *result,
                        wall_pose.getBasis() * normal, on_wall, depth);
   }
+  apart_by(gap);  // positive only if every sphere was released
 }
 
 void RodWallCollision::getAllContactManifolds(btManifoldArray& manifolds) {

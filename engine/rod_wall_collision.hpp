@@ -2,6 +2,8 @@
 
 #include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 
+#include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -16,9 +18,11 @@ namespace rodsort::engine {
 class RodWallCollision : public btCollisionAlgorithm {
  public:
   /// `restored`: the manifolds this pair had when its State was saved (surface_contacts.hpp).
+  /// Counts the steps it skips the pair on in `*skipped` (null: not counted).
   RodWallCollision(const btCollisionAlgorithmConstructionInfo& info,
                    const btCollisionObjectWrapper* rod, const btCollisionObjectWrapper* wall,
-                   bool rod_is_body0, std::span<const SurfaceContactState> restored);
+                   bool rod_is_body0, std::span<const SurfaceContactState> restored,
+                   std::int64_t* skipped);
   ~RodWallCollision() override;
 
   void processCollision(const btCollisionObjectWrapper* body0,
@@ -30,12 +34,20 @@ class RodWallCollision : public btCollisionAlgorithm {
   }
   void getAllContactManifolds(btManifoldArray& manifolds) override;
 
+  /// Whether the pair is skipped at this step: at the last test no sphere of `rod` was within the
+  /// contact-breaking distance of the wall, and the rod has not travelled that gap since. Counts
+  /// the skip.
+  bool skips(const btCollisionObject& rod);
+
  private:
   void release(btPersistentManifold*& manifold);
 
   bool rod_is_body0_;
   double breaking_threshold_;  ///< of the manifolds Bullet makes for this pair [mm]
   std::vector<btPersistentManifold*> manifolds_;  ///< one per sphere, null while it is far
+  /// Skipped while the rod's BodyTag::travel stays below this [mm] (NaN: test at the next step).
+  double skip_below_travel_ = std::numeric_limits<double>::quiet_NaN();
+  std::int64_t* skipped_;
 };
 
 }  // namespace rodsort::engine

@@ -245,7 +245,7 @@ struct Simulation::Impl {
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
     restored_contacts.assign(state.contacts);
     rod_collision = std::make_unique<RodCollisionDispatch>(*dispatcher, &restored_contacts,
-                                                           &counters.rod_pair_tests_skipped);
+                                                           &counters.pair_tests_skipped);
     broadphase = std::make_unique<btDbvtBroadphase>();
     overlap_filter = std::make_unique<PeriodicOverlapFilter>();
     broadphase->getOverlappingPairCache()->setOverlapFilterCallback(overlap_filter.get());
@@ -326,7 +326,7 @@ struct Simulation::Impl {
       const RodState& rs = state.rods[i];
       const Species& species = model.species[static_cast<std::size_t>(model.rods[i].species)];
       rod_tags.push_back({BodyKind::kRod, species.material, &model.materials, static_cast<int>(i)});
-      if (!model.test_every_rod_pair) rod_tags.back().travel = &travel[i];
+      if (!model.test_every_pair) rod_tags.back().travel = &travel[i];
       double reach = 0.0;
       for (const Sphere& sphere : species.shape.spheres) {
         reach = std::max(reach, std::abs(sphere.axial));

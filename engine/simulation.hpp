@@ -20,9 +20,9 @@ struct SimulationCounters {
   /// Contact solves that Model::exact_contact_solver gave up on and left to the sequential-impulse
   /// iterations, since the world was built (from the Model or a restored State).
   std::int64_t exact_solver_fallbacks = 0;
-  /// Tests of a pair of rods skipped because the two could not have touched yet
-  /// (rod_rod_collision.cpp), since the Simulation was built or its counters reset.
-  std::int64_t rod_pair_tests_skipped = 0;
+  /// Tests of a pair of rods, or of a rod and a wall, skipped because the two could not have
+  /// touched yet (rod_rod_collision.cpp), since the Simulation was built or its counters reset.
+  std::int64_t pair_tests_skipped = 0;
 };
 
 /// A Bullet world built from a Model, stepped with the Model's fixed dt.

@@ -105,7 +105,7 @@ TEST_CASE("rod pairs skipped while apart change nothing: bit for bit the run tha
           "[determinism][dense]") {
   Simulation skipping(dense_model());
   Model every_pair_model = dense_model();
-  every_pair_model.test_every_rod_pair = true;
+  every_pair_model.test_every_pair = true;
   Simulation every_pair(every_pair_model);
   // 0.2 s: rows running head-on into each other, across the periodic edges.
   for (int block = 0; block < 4; ++block) {
@@ -113,8 +113,8 @@ TEST_CASE("rod pairs skipped while apart change nothing: bit for bit the run tha
     every_pair.advance(500);
     REQUIRE(hash_state(skipping.state()) == hash_state(every_pair.state()));
   }
-  CHECK(every_pair.counters().rod_pair_tests_skipped == 0);
+  CHECK(every_pair.counters().pair_tests_skipped == 0);
   // The skips happened: 29,300 of them here (in a filled trap, ~70% of the pairs the broadphase
   // finds are skipped; docs/performance.md).
-  CHECK(skipping.counters().rod_pair_tests_skipped > 10000);
+  CHECK(skipping.counters().pair_tests_skipped > 10000);
 }
