@@ -11,6 +11,8 @@
 
 #include "bench/standard_system.hpp"
 #include "engine/simulation.hpp"
+#include "engine/units.hpp"
+#include "trap/v_trap.hpp"
 
 namespace rodsort::bench {
 
@@ -96,8 +98,14 @@ engine::State filled_paper_state(const FillOptions& options, std::ostream& log) 
     throw std::runtime_error("cannot write the filled state " + path.string() + ": " +
                              error.message());
   }
+  const trap::VTrap trap = trap::centered_v_trap(
+      kPaperBox, kPaperBox, degrees_to_radians(kTrapAngleDegrees), kPaperArm, kTrapWallThickness);
+  int inside = 0;
+  for (const engine::RodState& rod : state.rods) {
+    inside += trap.contains(Eigen::Vector2d(rod.position[0], rod.position[1])) ? 1 : 0;
+  }
   log << "rodsort_bench: filled in " << number("%.0f", process_cpu_seconds() - cpu_start)
-      << " CPU-s\n"
+      << " CPU-s; " << inside << " of " << state.rods.size() << " rods in the trap\n"
       << std::flush;
   return state;
 }
