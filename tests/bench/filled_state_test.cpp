@@ -65,7 +65,7 @@ TEST_CASE("tiles repeat the cell's walls and rods shifted by whole cells", "[ben
   CHECK_THROWS_AS(tile_model(cell, 0), std::invalid_argument);
 }
 
-TEST_CASE("one tile continues the filled run exactly; four tiles step as four copies", "[bench]") {
+TEST_CASE("one tile continues the filled run exactly and four tiles step as four copies", "[bench]") {
   testing::TempDirectory directory;
   const FillOptions fill = short_fill(directory.path());
   std::ostringstream log;
