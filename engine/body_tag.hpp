@@ -9,7 +9,6 @@
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include <algorithm>
-#include <limits>
 
 #include "engine/materials.hpp"
 #include "engine/plate_roughness.hpp"
@@ -45,12 +44,10 @@ inline void attach_tag(btCollisionObject& object, BodyTag& tag) {
   object.setUserIndex3(kBodyTagMark);
 }
 
-/// BodyTag::travel of a rod or an image; NaN where none is kept, so that every comparison with it
-/// fails and nothing is skipped.
-inline double travel_of(const btCollisionObject& object) {
-  if (object.getUserIndex3() != kBodyTagMark) return std::numeric_limits<double>::quiet_NaN();
-  const auto* tag = static_cast<const BodyTag*>(object.getUserPointer());
-  return tag->travel != nullptr ? *tag->travel : std::numeric_limits<double>::quiet_NaN();
+/// Where BodyTag::travel of a rod or an image is kept; null where it is not (nothing is skipped).
+inline const double* travel_of(const btCollisionObject& object) {
+  if (object.getUserIndex3() != kBodyTagMark) return nullptr;
+  return static_cast<const BodyTag*>(object.getUserPointer())->travel;
 }
 
 /// Taken off every gap before a pair is skipped on it, for the rounding of gaps and travels [mm].

@@ -61,29 +61,25 @@ btCollisionAlgorithm* RodCollisionDispatch::RodBox::CreateCollisionAlgorithm(
 }
 
 btCollisionAlgorithm* RodCollisionDispatch::RodRod::CreateCollisionAlgorithm(
-    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* /*body0*/,
-    const btCollisionObjectWrapper* /*body1*/) {
+    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
+    const btCollisionObjectWrapper* body1) {
   void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(RodRodCollision));
-  return new (memory) RodRodCollision(info, skipped);
+  return new (memory) RodRodCollision(info, skipped, travel_of(*body0->getCollisionObject()),
+                                      travel_of(*body1->getCollisionObject()));
 }
 
 void RodCollisionDispatch::near_callback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
                                          const btDispatcherInfo& info) {
-  const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
-  const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-  // Two compounds are two rods (or a rod and an image), and their algorithm is a RodRodCollision;
-  // a compound and a wall's box have a RodWallCollision.
+  // Told apart by the proxies' collision groups, without reading the collision objects: two rods
+  // (or a rod and an image) have a RodRodCollision, a rod and a wall a RodWallCollision.
   if (pair.m_algorithm != nullptr) {
-    const bool rod_a = a->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
-    const bool rod_b = b->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
-    if (rod_a && rod_b) {
-      if (static_cast<RodRodCollision*>(pair.m_algorithm)->skips(*a, *b)) return;
-    } else if (rod_a != rod_b) {
-      const auto* box = static_cast<const BodyTag*>((rod_a ? b : a)->getUserPointer());
-      if (box->kind == BodyKind::kWall &&
-          static_cast<RodWallCollision*>(pair.m_algorithm)->skips(rod_a ? *a : *b)) {
-        return;
-      }
+    constexpr int kRodLike = kGroupRod | kGroupImage;
+    const int group0 = pair.m_pProxy0->m_collisionFilterGroup;
+    const int group1 = pair.m_pProxy1->m_collisionFilterGroup;
+    if ((group0 & kRodLike) != 0 && (group1 & kRodLike) != 0) {
+      if (static_cast<RodRodCollision*>(pair.m_algorithm)->skips()) return;
+    } else if ((group0 | group1) == (kGroupRod | kGroupWall)) {
+      if (static_cast<RodWallCollision*>(pair.m_algorithm)->skips()) return;
     }
   }
   btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);

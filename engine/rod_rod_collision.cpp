@@ -64,20 +64,14 @@ void RodRodCollision::release_from(std::size_t first) {
   manifolds_.resize(std::min(first, manifolds_.size()));
 }
 
-bool RodRodCollision::skips(const btCollisionObject& a, const btCollisionObject& b) {
-  if (!(travel_of(a) + travel_of(b) < skip_below_travel_)) return false;
-  if (skipped_ != nullptr) ++*skipped_;
-  return true;
-}
-
 void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
                                        const btCollisionObjectWrapper* body1,
                                        const btDispatcherInfo& /*dispatch_info*/,
                                        btManifoldResult* /*result*/) {
   const btCollisionObject* object0 = body0->getCollisionObject();
   const btCollisionObject* object1 = body1->getCollisionObject();
-  if (skips(*object0, *object1)) return;  // apart at the last test, no point since: none now
-  const double travel = travel_of(*object0) + travel_of(*object1);
+  if (skips()) return;  // apart at the last test, no point since: none now
+  const double travel = this->travel();
   // No point this step and `gap` (> 0) between the rods: skip until they have travelled that far.
   const auto apart_by = [this, travel](double gap) {
     skip_below_travel_ = gap > kTravelMargin ? travel + (gap - kTravelMargin)

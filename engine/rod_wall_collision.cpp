@@ -54,7 +54,8 @@ RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& i
                    wall->getCollisionObject()->getCollisionShape()->getContactBreakingThreshold(
                        kContactBreakingFactor))),
       manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr),
-      skipped_(skipped) {
+      skipped_(skipped),
+      rod_travel_(travel_of(*rod->getCollisionObject())) {
   restore_sphere_manifolds(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject(),
                            restored, manifolds_);
 }
@@ -69,20 +70,14 @@ void RodWallCollision::release(btPersistentManifold*& manifold) {
   manifold = nullptr;
 }
 
-bool RodWallCollision::skips(const btCollisionObject& rod) {
-  if (!(travel_of(rod) < skip_below_travel_)) return false;
-  if (skipped_ != nullptr) ++*skipped_;
-  return true;
-}
-
 void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
                                         const btCollisionObjectWrapper* body1,
                                         const btDispatcherInfo& /*dispatch_info*/,
                                         btManifoldResult* result) {
   const btCollisionObjectWrapper* rod = rod_is_body0_ ? body0 : body1;
   const btCollisionObjectWrapper* wall = rod_is_body0_ ? body1 : body0;
-  if (skips(*rod->getCollisionObject())) return;  // out of reach at the last test, and since
-  const double travel = travel_of(*rod->getCollisionObject());
+  if (skips()) return;  // out of reach at the last test, and since
+  const double travel = this->travel();
   // Every manifold released and every sphere `gap` (> 0) beyond reach: skip until the rod has
   // travelled that far.
   const auto apart_by = [this, travel](double gap) {
