@@ -2,34 +2,12 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "engine/random_stream.hpp"
 #include "engine/simulation.hpp"
 #include "paper_model.hpp"
 
 using namespace rodsort::engine;
 
 namespace {
-
-constexpr int kRods = 300;
-constexpr int kColumns = 17;
-constexpr int kRows = 18;
-
-/// 300 rod A at the paper's area fraction (319 rods in an 86.85 mm cell), on a lattice, rows
-/// heading alternately +x and -x with a little jitter, so that no two rods overlap at the start.
-Model dense_model() {
-  const double box = 86.85 * std::sqrt(static_cast<double>(kRods) / 319.0);
-  Model model = testing::paper_model(box);  // the default dt
-  model.seed = 3;
-  model.species.push_back(testing::rod_species(preset_a_profile(), 0.01));
-  RandomStream jitter(11, 0, StreamPurpose::kPlacement);
-  for (int i = 0; i < kRods; ++i) {
-    const int row = i / kColumns;
-    const int column = i % kColumns;
-    const double heading = (row % 2 == 0 ? 0.0 : rodsort::kPi) + 0.3 * (jitter.uniform() - 0.5);
-    model.rods.push_back({0, (column + 0.5) * box / kColumns, (row + 0.5) * box / kRows, heading});
-  }
-  return model;
-}
 
 struct Overlaps {
   double rod_rod = 0.0;    ///< deepest sphere-sphere penetration between different rods [mm]
@@ -75,7 +53,7 @@ Overlaps measure(const Simulation& sim) {
 
 TEST_CASE("300 rods for one second at the default dt: in the gap, no deep overlaps, no NaN",
           "[physics][dense]") {
-  Simulation sim(dense_model());
+  Simulation sim(testing::dense_paper_model());
   const double diameter = 2.0 * sim.model().species[0].shape.max_radius;
   Overlaps worst;
   for (int check = 0; check < 20; ++check) {
@@ -99,22 +77,4 @@ TEST_CASE("300 rods for one second at the default dt: in the gap, no deep overla
     CHECK(rod.z > sim.base_surface_z());
     CHECK(rod.z < sim.lid_surface_z());
   }
-}
-
-TEST_CASE("rod pairs skipped while apart change nothing: bit for bit the run that tests them all",
-          "[determinism][dense]") {
-  Simulation skipping(dense_model());
-  Model every_pair_model = dense_model();
-  every_pair_model.test_every_pair = true;
-  Simulation every_pair(every_pair_model);
-  // 0.2 s: rows running head-on into each other, across the periodic edges.
-  for (int block = 0; block < 4; ++block) {
-    skipping.advance(500);
-    every_pair.advance(500);
-    REQUIRE(hash_state(skipping.state()) == hash_state(every_pair.state()));
-  }
-  CHECK(every_pair.counters().pair_tests_skipped == 0);
-  // The skips happened: 29,300 of them here (in a filled trap, ~70% of the pairs the broadphase
-  // finds are skipped; docs/performance.md).
-  CHECK(skipping.counters().pair_tests_skipped > 10000);
 }
