@@ -10,6 +10,7 @@
 
 #include <algorithm>
 
+#include "engine/apart_pair.hpp"
 #include "engine/materials.hpp"
 #include "engine/plate_roughness.hpp"
 
@@ -29,9 +30,9 @@ struct BodyTag {
   int wall = -1;                 ///< wall index for kWall
   const PlateRoughness* roughness = nullptr;  ///< kBase and kLid: the surface, null when flat
   /// kRod and kImage: a bound on how far any sphere centre of the rod has moved since the world
-  /// was built [mm], summed step by step; null where nobody keeps it. The rod-rod and rod-wall
-  /// algorithms skip a pair whose gap the rods cannot yet have closed (rod_rod_collision.cpp).
-  const double* travel = nullptr;
+  /// was built (apart_pair.hpp); null where nobody keeps it. The rod-rod and rod-wall algorithms
+  /// skip a pair whose gap the rods cannot yet have closed.
+  const Travel* travel = nullptr;
 };
 
 /// Every collision object of a simulation carries this mark in its user index 3 beside its tag, so
@@ -45,13 +46,10 @@ inline void attach_tag(btCollisionObject& object, BodyTag& tag) {
 }
 
 /// Where BodyTag::travel of a rod or an image is kept; null where it is not (nothing is skipped).
-inline const double* travel_of(const btCollisionObject& object) {
+inline const Travel* travel_of(const btCollisionObject& object) {
   if (object.getUserIndex3() != kBodyTagMark) return nullptr;
   return static_cast<const BodyTag*>(object.getUserPointer())->travel;
 }
-
-/// Taken off every gap before a pair is skipped on it, for the rounding of gaps and travels [mm].
-constexpr double kTravelMargin = 1e-7;
 
 /// Makes Bullet combine friction and restitution of two tagged bodies by looking the pair up in
 /// their material table instead of multiplying per-body values; contacts of bodies without the

@@ -22,9 +22,9 @@
 // Each test that makes no point also gives the gap between the two rods (a lower bound: exact for
 // sphere pairs within a skin of touching, the bounding spheres' or capsules' gap otherwise, at
 // most the skin), and the pair is not tested again until the two rods together have travelled
-// that far (BodyTag::travel, kept by the simulation: the centre's move plus the axis's times the
-// farthest sphere centre, summed over steps). No sphere pair can touch before then, so a skipped
-// test is one that would have made no point: the contacts are the same, bit for bit.
+// that far (apart_pair.hpp; the simulation adds each step's move of the centre plus the axis's
+// times the farthest sphere centre). No sphere pair can touch before then, so a skipped test is
+// one that would have made no point: the contacts are the same, bit for bit.
 #include "engine/rod_rod_collision.hpp"
 
 #include <BulletCollision/BroadphaseCollision/btDispatcher.h>
@@ -68,15 +68,7 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
                                        const btCollisionObjectWrapper* body1,
                                        const btDispatcherInfo& /*dispatch_info*/,
                                        btManifoldResult* /*result*/) {
-  const btCollisionObject* object0 = body0->getCollisionObject();
-  const btCollisionObject* object1 = body1->getCollisionObject();
-  if (skips()) return;  // apart at the last test, no point since: none now
-  const double travel = this->travel();
-  // No point this step and `gap` (> 0) between the rods: skip until they have travelled that far.
-  const auto apart_by = [this, travel](double gap) {
-    skip_below_travel_ = gap > kTravelMargin ? travel + (gap - kTravelMargin)
-                                             : std::numeric_limits<double>::quiet_NaN();
-  };
+  if (apart_.skips()) return;  // apart at the last test, no point since: none now
 
   const RodGeometry& geometry0 = RodGeometry::of(*body0->getCollisionShape());
   const RodGeometry& geometry1 = RodGeometry::of(*body1->getCollisionShape());
@@ -92,7 +84,7 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
                             (axis1 * geometry1.axial_center + pose1.getOrigin());
   if (between.length2() > spheres_reach * spheres_reach) {
     release_from(0);
-    apart_by(between.length() - spheres_reach);
+    apart_.tested(between.length() - spheres_reach);
     return;
   }
   const double capsule_reach = geometry0.max_radius + geometry1.max_radius;
@@ -102,13 +94,15 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
                                                    axis1 * geometry1.axial_max + pose1.getOrigin());
   if (capsules > capsule_reach * capsule_reach) {
     release_from(0);
-    apart_by(std::sqrt(capsules) - capsule_reach);
+    apart_.tested(std::sqrt(capsules) - capsule_reach);
     return;
   }
 
   // The points are those of Bullet's nested compound algorithms, bit for bit: for sphere i of
   // body 0 and sphere j of body 1, btSphereSphereCollisionAlgorithm runs with sphere j first, so
   // its manifold has body 1 as its A side and the normal points from sphere i toward sphere j.
+  const btCollisionObject* object0 = body0->getCollisionObject();
+  const btCollisionObject* object1 = body1->getCollisionObject();
   double friction = 0.0, restitution = 0.0, rolling_friction = 0.0, spinning_friction = 0.0;
   std::size_t points = 0;
   double gap = kSkin;  // the least of the sphere pairs' gaps, or the skin
@@ -181,7 +175,7 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
     }
   }
   release_from((points + MANIFOLD_CACHE_SIZE - 1) / MANIFOLD_CACHE_SIZE);
-  apart_by(points == 0 ? gap : 0.0);
+  apart_.tested(points == 0 ? gap : 0.0);
 }
 
 void RodRodCollision::getAllContactManifolds(btManifoldArray& manifolds) {

@@ -3,8 +3,9 @@
 #include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 
 #include <cstdint>
-#include <limits>
 #include <vector>
+
+#include "engine/apart_pair.hpp"
 
 class btPersistentManifold;
 
@@ -18,8 +19,8 @@ class RodRodCollision : public btCollisionAlgorithm {
   /// `travel1`: the two rods' BodyTag::travel (travel_of), kept here so that the test whether to
   /// skip reads neither collision object; null for either, never skipped.
   RodRodCollision(const btCollisionAlgorithmConstructionInfo& info, std::int64_t* skipped,
-                  const double* travel0, const double* travel1)
-      : btCollisionAlgorithm(info), skipped_(skipped), travel0_(travel0), travel1_(travel1) {}
+                  const Travel* travel0, const Travel* travel1)
+      : btCollisionAlgorithm(info), apart_(travel0, travel1, skipped) {}
   ~RodRodCollision() override;
 
   void processCollision(const btCollisionObjectWrapper* body0,
@@ -33,27 +34,13 @@ class RodRodCollision : public btCollisionAlgorithm {
 
   /// Whether the pair is skipped at this step: its rods were apart at the last test by more than
   /// they have travelled since. Counts the skip.
-  bool skips() {
-    if (!(travel() < skip_below_travel_)) return false;
-    if (skipped_ != nullptr) ++*skipped_;
-    return true;
-  }
+  bool skips() { return apart_.skips(); }
 
  private:
   void release_from(std::size_t first);
-  /// The two rods' travel summed; NaN where either is not kept.
-  double travel() const {
-    return travel0_ != nullptr && travel1_ != nullptr ? *travel0_ + *travel1_
-                                                      : std::numeric_limits<double>::quiet_NaN();
-  }
 
   std::vector<btPersistentManifold*> manifolds_;  ///< filled four points each, cleared every step
-  /// The pair is skipped while the two rods' BodyTag::travel sum stays below this [mm]: they were
-  /// apart by more than that can close (NaN: test at the next step).
-  double skip_below_travel_ = std::numeric_limits<double>::quiet_NaN();
-  std::int64_t* skipped_;
-  const double* travel0_;
-  const double* travel1_;
+  ApartPair apart_;
 };
 
 }  // namespace rodsort::engine

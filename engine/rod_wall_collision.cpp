@@ -19,7 +19,7 @@
 // contacts in another order.
 //
 // A rod with no sphere within the contact-breaking distance gives the gap by which it stays out of
-// it, and the pair is not tested again until the rod has travelled that far (BodyTag::travel; the
+// it, and the pair is not tested again until the rod has travelled that far (apart_pair.hpp; the
 // wall does not move): a skipped test is one that would have made nothing, as for rod pairs
 // (rod_rod_collision.cpp).
 #include "engine/rod_wall_collision.hpp"
@@ -54,8 +54,7 @@ RodWallCollision::RodWallCollision(const btCollisionAlgorithmConstructionInfo& i
                    wall->getCollisionObject()->getCollisionShape()->getContactBreakingThreshold(
                        kContactBreakingFactor))),
       manifolds_(RodGeometry::of(*rod->getCollisionShape()).axial.size(), nullptr),
-      skipped_(skipped),
-      rod_travel_(travel_of(*rod->getCollisionObject())) {
+      apart_(travel_of(*rod->getCollisionObject()), &kStill, skipped) {
   restore_sphere_manifolds(*m_dispatcher, rod->getCollisionObject(), wall->getCollisionObject(),
                            restored, manifolds_);
 }
@@ -76,14 +75,7 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
                                         btManifoldResult* result) {
   const btCollisionObjectWrapper* rod = rod_is_body0_ ? body0 : body1;
   const btCollisionObjectWrapper* wall = rod_is_body0_ ? body1 : body0;
-  if (skips()) return;  // out of reach at the last test, and since
-  const double travel = this->travel();
-  // Every manifold released and every sphere `gap` (> 0) beyond reach: skip until the rod has
-  // travelled that far.
-  const auto apart_by = [this, travel](double gap) {
-    skip_below_travel_ = gap > kTravelMargin ? travel + (gap - kTravelMargin)
-                                             : std::numeric_limits<double>::quiet_NaN();
-  };
+  if (apart_.skips()) return;  // out of reach at the last test, and since
   const RodGeometry& geometry = RodGeometry::of(*rod->getCollisionShape());
   const btTransform& pose = rod->getWorldTransform();
   const btVector3 axis = pose.getBasis().getColumn(0);
@@ -105,7 +97,7 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
   }
   if (separation > 0.0) {
     for (btPersistentManifold*& manifold : manifolds_) release(manifold);
-    apart_by(separation);
+    apart_.tested(separation);
     return;
   }
 
@@ -145,7 +137,7 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
                        wall->getCollisionObject(), rod_is_body0_, static_cast<int>(i), *result,
                        wall_pose.getBasis() * normal, on_wall, depth);
   }
-  apart_by(gap);  // positive only if every sphere was released
+  apart_.tested(gap);  // positive only if every sphere was released
 }
 
 void RodWallCollision::getAllContactManifolds(btManifoldArray& manifolds) {

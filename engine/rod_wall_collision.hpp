@@ -3,10 +3,10 @@
 #include <BulletCollision/BroadphaseCollision/btCollisionAlgorithm.h>
 
 #include <cstdint>
-#include <limits>
 #include <span>
 #include <vector>
 
+#include "engine/apart_pair.hpp"
 #include "engine/state.hpp"
 
 class btPersistentManifold;
@@ -37,25 +37,15 @@ class RodWallCollision : public btCollisionAlgorithm {
   /// Whether the pair is skipped at this step: at the last test no sphere of the rod was within
   /// the contact-breaking distance of the wall, and the rod has not travelled that gap since
   /// (its BodyTag::travel, kept here from construction; none kept, never skipped). Counts the skip.
-  bool skips() {
-    if (!(travel() < skip_below_travel_)) return false;
-    if (skipped_ != nullptr) ++*skipped_;
-    return true;
-  }
+  bool skips() { return apart_.skips(); }
 
  private:
   void release(btPersistentManifold*& manifold);
-  double travel() const {
-    return rod_travel_ != nullptr ? *rod_travel_ : std::numeric_limits<double>::quiet_NaN();
-  }
 
   bool rod_is_body0_;
   double breaking_threshold_;  ///< of the manifolds Bullet makes for this pair [mm]
   std::vector<btPersistentManifold*> manifolds_;  ///< one per sphere, null while it is far
-  /// Skipped while the rod's BodyTag::travel stays below this [mm] (NaN: test at the next step).
-  double skip_below_travel_ = std::numeric_limits<double>::quiet_NaN();
-  std::int64_t* skipped_;
-  const double* rod_travel_;
+  ApartPair apart_;                               ///< the rod against the still wall
 };
 
 }  // namespace rodsort::engine

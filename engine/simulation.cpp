@@ -127,7 +127,7 @@ struct Simulation::Impl {
   std::vector<char> noise_turned;                  ///< per rod: the solver applied noise_rate
   /// Per rod: BodyTag::travel, the pose it was last brought up to date at, and the distance of
   /// the farthest sphere centre from the centre of mass [mm].
-  std::vector<double> travel;
+  std::vector<Travel> travel;
   std::vector<btTransform> travel_pose;
   std::vector<double> axial_reach;
   double thinnest_radius = 0.0;                    ///< of any rod's spheres [mm]
@@ -319,7 +319,7 @@ struct Simulation::Impl {
     rod_tags.clear();
     rod_tags.reserve(rod_count);
     rods.clear();
-    travel.assign(rod_count, 0.0);  // never resized while the world stands: tags point into it
+    travel.assign(rod_count, 0);  // never resized while the world stands: tags point into it
     travel_pose.clear();
     axial_reach.clear();
     for (std::size_t i = 0; i < rod_count; ++i) {
@@ -453,9 +453,10 @@ struct Simulation::Impl {
       // A sphere centre at a on the axis moves by the centre's move plus a times the axis's: the
       // sum bounds every sphere's, and an image's (a wrap moves it with its rod).
       const btTransform& last = travel_pose[i];
-      travel[i] += (transform.getOrigin() - last.getOrigin()).length() +
-                   (transform.getBasis().getColumn(0) - last.getBasis().getColumn(0)).length() *
-                       axial_reach[i];
+      travel[i] += travel_of_move(
+          (transform.getOrigin() - last.getOrigin()).length() +
+          (transform.getBasis().getColumn(0) - last.getBasis().getColumn(0)).length() *
+              axial_reach[i]);
       travel_pose[i] = transform;
       const bool near_edge = cell.near_edge(transform.getOrigin().x(), transform.getOrigin().y());
       for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
