@@ -3,12 +3,12 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <iostream>
 #include <ostream>
 #include <stdexcept>
 
 #include "bench/benchmark.hpp"
+#include "bench/measures.hpp"
 #include "bench/standard_system.hpp"
 #include "engine/random_stream.hpp"
 #include "engine/simulation.hpp"
@@ -23,12 +23,6 @@ namespace {
 constexpr double kFrameInterval = 0.07;
 /// Lags of the D_r fit, in frame intervals.
 constexpr int kMinLag = 1, kMaxLag = 10;
-
-double process_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
 
 /// One rod A at the centre of a 30 mm cell, the paper's drive.
 engine::Model single_rod(double dt, const AccuracyOptions& options, std::uint64_t seed) {
@@ -50,12 +44,6 @@ engine::Model single_rod(double dt, const AccuracyOptions& options, std::uint64_
 
 /// Speed at which drop_restitution's rod meets the base [mm/s].
 constexpr double kDropSpeed = 150.0;
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
 
 constexpr const char* kTableHeader =
     "      dt   v0 [mm/s]        D_r [rad^2/s]    events/s  1 rod CPU-s/sim-s  319 rods "

@@ -1,14 +1,13 @@
 #include "bench/filled_state.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
+#include "bench/measures.hpp"
 #include "bench/standard_system.hpp"
 #include "engine/simulation.hpp"
 #include "engine/units.hpp"
@@ -23,18 +22,6 @@ constexpr const char* kPackedSystem = "319-full";
 /// The cost of the fill per simulated second, for the announcement: the packed system's measured
 /// average over its first 30 s (docs/performance.md, section 1) [CPU-s / sim-s].
 constexpr double kFillCostPerSecond = 4.0;
-
-std::string number(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
-double process_cpu_seconds() {
-  timespec now{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
 
 engine::Model packed_model(const FillOptions& options) {
   engine::Model model = build_model(find_system(kPackedSystem), options.dt, options.seed);
@@ -59,8 +46,8 @@ bool read_filled(const std::filesystem::path& path, std::size_t rods, engine::St
 std::filesystem::path filled_state_path(const FillOptions& options) {
   return options.directory /
          ("paper-120deg-filled-seed" + std::to_string(options.seed) + "-dt" +
-          number("%g", options.dt) + "-iterations" + std::to_string(options.solver_iterations) +
-          "-fill" + number("%g", options.fill_time) + "s.state");
+          format("%g", options.dt) + "-iterations" + std::to_string(options.solver_iterations) +
+          "-fill" + format("%g", options.fill_time) + "s.state");
 }
 
 engine::State filled_paper_state(const FillOptions& options, std::ostream& log) {
@@ -71,7 +58,7 @@ engine::State filled_paper_state(const FillOptions& options, std::ostream& log) 
 
   log << "rodsort_bench: filling the trap of " << kPackedSystem << ": " << options.fill_time
       << " simulated s from the packed start, about "
-      << number("%.0f", kFillCostPerSecond * options.fill_time / 60.0) << " CPU-min, once; kept in "
+      << format("%.0f", kFillCostPerSecond * options.fill_time / 60.0) << " CPU-min, once; kept in "
       << path.string() << '\n'
       << std::flush;
   const double cpu_start = process_cpu_seconds();
@@ -104,7 +91,7 @@ engine::State filled_paper_state(const FillOptions& options, std::ostream& log) 
   for (const engine::RodState& rod : state.rods) {
     inside += trap.contains(Eigen::Vector2d(rod.position[0], rod.position[1])) ? 1 : 0;
   }
-  log << "rodsort_bench: filled in " << number("%.0f", process_cpu_seconds() - cpu_start)
+  log << "rodsort_bench: filled in " << format("%.0f", process_cpu_seconds() - cpu_start)
       << " CPU-s; " << inside << " of " << state.rods.size() << " rods in the trap\n"
       << std::flush;
   return state;
