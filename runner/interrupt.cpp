@@ -1,15 +1,35 @@
 #include "runner/interrupt.hpp"
 
 #include <csignal>
+#include <ctime>
 
 namespace rodsort::runner {
 namespace {
 
+// A repeat closer than this to the first signal is taken as the same request (see interrupt.hpp).
+constexpr double kSameRequestS = 1.0;
+
 volatile std::sig_atomic_t g_received = 0;
+// When the first signal came, on CLOCK_MONOTONIC; written only by the handler.
+timespec g_first_at{};
 struct sigaction g_previous_int {};
 struct sigaction g_previous_term {};
 
-extern "C" void record_signal(int signal_number) { g_received = signal_number; }
+// Only async-signal-safe calls: clock_gettime, signal, raise.
+extern "C" void record_signal(int signal_number) {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);
+  if (g_received == 0) {
+    g_first_at = now;
+    g_received = signal_number;
+    return;
+  }
+  const double since_first_s = static_cast<double>(now.tv_sec - g_first_at.tv_sec) +
+                               1e-9 * static_cast<double>(now.tv_nsec - g_first_at.tv_nsec);
+  if (since_first_s < kSameRequestS) return;
+  signal(signal_number, SIG_DFL);
+  raise(signal_number);
+}
 
 }  // namespace
 
@@ -19,7 +39,7 @@ InterruptGuard::InterruptGuard() {
   action.sa_handler = record_signal;
   sigemptyset(&action.sa_mask);
   // No SA_RESTART: a blocking call returns EINTR so the caller notices promptly.
-  action.sa_flags = SA_RESETHAND;
+  action.sa_flags = 0;
   sigaction(SIGINT, &action, &g_previous_int);
   sigaction(SIGTERM, &action, &g_previous_term);
 }

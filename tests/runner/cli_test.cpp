@@ -102,6 +102,29 @@ TEST_CASE("a run stopped by SIGINT exits 130 and resumes to completion", "[runne
   CHECK(done->sessions == 2);
 }
 
+TEST_CASE("a run sent SIGTERM twice at once, as timeout does, still writes its checkpoint",
+          "[runner][cli]") {
+  TempDirectory scratch;
+  const auto run = scratch / "run";
+  const pid_t pid = rodsort::runner::testing::start_rodsort(
+      {"run", kTiny, "-o", run.string(), "--set", "run.duration=10", "--set",
+       "output.checkpoint_interval=5"},
+      scratch / "out.txt", scratch / "err.txt");
+  const auto rods = run / kRodsCsvFile;
+  while (!std::filesystem::exists(rods) || std::filesystem::file_size(rods) < 2000) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  // The child and then its process group: the second copy comes while the first is handled.
+  kill(pid, SIGTERM);
+  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGTERM);
+  REQUIRE(rodsort::runner::testing::wait_rodsort(pid) == kExitInterrupted);
+  const auto stopped = read_run_record(run);
+  REQUIRE(stopped.has_value());
+  CHECK(stopped->status == RunStatus::kInterrupted);
+  CHECK_THAT(read_file(scratch / "err.txt"), Catch::Contains("stopped by SIGTERM"));
+}
+
 TEST_CASE("a run killed with SIGKILL leaves readable files and resumes", "[runner][cli]") {
   TempDirectory scratch;
   const auto run = scratch / "run";
