@@ -17,6 +17,7 @@ struct PlotOptions {
   std::string output;
   std::string format;
   double tau = 0.0;
+  double until = 0.0;
 };
 
 int plot(const PlotOptions& options) {
@@ -25,6 +26,9 @@ int plot(const PlotOptions& options) {
   if (!options.output.empty()) arguments.insert(arguments.end(), {"-o", options.output});
   if (!options.format.empty()) arguments.insert(arguments.end(), {"--format", options.format});
   if (options.tau > 0.0) arguments.insert(arguments.end(), {"--tau", std::to_string(options.tau)});
+  if (options.until > 0.0) {
+    arguments.insert(arguments.end(), {"--until", std::to_string(options.until)});
+  }
   const render::ProgramOutput plotted = render::run_plot_script(arguments);
   (plotted.exit_status == 0 ? std::cout : std::cerr) << plotted.output;
   switch (plotted.exit_status) {
@@ -60,6 +64,11 @@ Command add_plot_command(CLI::App& app) {
                            "Comma-separated: png, svg, pdf (default: png,svg)");
   plot_command
       ->add_option("--tau", options->tau, "Window of P(dtheta) [s] (default 0.07, the paper's)")
+      ->check(positive_number());
+  plot_command
+      ->add_option("--until", options->until,
+                   "eta and population of runs: draw up to this time [s] (runs of different "
+                   "lengths on one time axis)")
       ->check(positive_number());
   return {plot_command, [options] { return plot(*options); }};
 }

@@ -468,11 +468,19 @@ def save(plt, figure, out_dir, name, formats, written):
     plt.close(figure)
 
 
-def plot_eta(plt, runs, out_dir, formats, written):
+def run_metrics(run_dir, until):
+    """A run's metrics.csv, its rows up to t = until [s] when until is given."""
+    table = Table(os.path.join(run_dir, "metrics.csv"))
+    if until is not None:
+        table.rows = [row for row, t in zip(table.rows, table.numbers("t")) if t <= until]
+    return table
+
+
+def plot_eta(plt, runs, out_dir, formats, written, until):
     figure, axes = new_figure(plt)
     several = len(runs) > 1
     for index, run_dir in enumerate(runs):
-        table = Table(os.path.join(run_dir, "metrics.csv"))
+        table = run_metrics(run_dir, until)
         t = table.numbers("t")
         eta = table.numbers("eta", "eta(t)")
         label = run_label(run_dir, runs) if several else "all rods"
@@ -498,11 +506,11 @@ def plot_eta(plt, runs, out_dir, formats, written):
     save(plt, figure, out_dir, "eta", formats, written)
 
 
-def plot_population(plt, runs, out_dir, formats, written):
+def plot_population(plt, runs, out_dir, formats, written, until):
     figure, axes = new_figure(plt)
     several = len(runs) > 1
     for index, run_dir in enumerate(runs):
-        table = Table(os.path.join(run_dir, "metrics.csv"))
+        table = run_metrics(run_dir, until)
         t = table.numbers("t")
         species = metrics_species(table)
         if not species:
@@ -761,6 +769,9 @@ def parse_arguments(argv):
     parser.add_argument("--format", default="png,svg", help="comma-separated: png, svg, pdf")
     parser.add_argument("--tau", type=float, default=0.07,
                         help="window of P(dtheta) in seconds (default 0.07, the paper's)")
+    parser.add_argument("--until", type=float, default=None,
+                        help="eta and population of runs: draw up to this time [s] (runs of "
+                        "different lengths on one time axis)")
     return parser.parse_args(argv)
 
 
@@ -801,6 +812,8 @@ def main(argv):
             raise UsageError(f"--format: unknown format '{extension}'; expected png, svg or pdf")
     if not arguments.tau > 0.0:
         raise UsageError(f"--tau: must be positive, got {arguments.tau}")
+    if arguments.until is not None and not arguments.until > 0.0:
+        raise UsageError(f"--until: must be positive, got {arguments.until}")
 
     out_dir = arguments.output or (os.path.join(paths[0], "plots") if len(paths) == 1
                                    else "plots")
@@ -856,9 +869,9 @@ def main(argv):
                 elif kind == "msd":
                     plot_msd(plt, paths, out_dir, formats, written)
                 elif kind == "eta":
-                    plot_eta(plt, paths, out_dir, formats, written)
+                    plot_eta(plt, paths, out_dir, formats, written, arguments.until)
                 elif kind == "population":
-                    plot_population(plt, paths, out_dir, formats, written)
+                    plot_population(plt, paths, out_dir, formats, written, arguments.until)
                 else:
                     plot_dtheta(plt, paths, out_dir, formats, written, arguments.tau)
             except PlotError as error:

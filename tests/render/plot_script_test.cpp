@@ -76,6 +76,42 @@ TEST_CASE("The plot script draws eta(t), the trap population and P(dtheta) of a 
   }
 }
 
+TEST_CASE("The plot script draws a run up to --until", "[render][plot]") {
+  require_plot_python();
+  const TestScene test;
+  const TempDirectory run;
+  write_run_with_metrics(run.path(), test, 12);
+  // The vertices of the drawn lines: matplotlib writes each line as one SVG path, "M x y L x y
+  // ...".
+  const auto vertices = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> arguments = {run.path().string(), "--what", "eta,population",
+                                          "--format", "svg"};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    const render::ProgramOutput plotted = render::run_plot_script(arguments);
+    INFO(plotted.output);
+    REQUIRE(plotted.exit_status == 0);
+    std::vector<std::size_t> counts;
+    for (const char* name : {"eta.svg", "population.svg"}) {
+      const std::string svg = read_text(run / "plots" / name);
+      std::size_t count = 0;
+      for (auto at = svg.find("L "); at != std::string::npos; at = svg.find("L ", at + 1)) ++count;
+      counts.push_back(count);
+    }
+    return counts;
+  };
+  const auto whole = vertices({});
+  // Up to the 6th frame: 5 of the 11 metrics rows, so each line loses 6 of its points.
+  const auto cut = vertices({"--until", std::to_string(5.5 * kFrameInterval)});
+  for (std::size_t k = 0; k < whole.size(); ++k) {
+    INFO("plot " << k);
+    CHECK(cut[k] + 6 <= whole[k]);
+  }
+  const render::ProgramOutput refused =
+      render::run_plot_script({run.path().string(), "--until", "0"});
+  CHECK(refused.exit_status == 2);
+  CHECK_THAT(refused.output, Catch::Contains("--until: must be positive"));
+}
+
 TEST_CASE("The plot script names a missing column", "[render][plot]") {
   require_plot_python();
   const TempDirectory run;
