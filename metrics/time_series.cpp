@@ -42,4 +42,31 @@ PlateauStats plateau_stats(const std::vector<double>& times, const std::vector<d
   return stats;
 }
 
+std::vector<NucleationAttempt> nucleation_attempts(const std::vector<double>& times,
+                                                   const std::vector<double>& values, double rise,
+                                                   double fall) {
+  assert(times.size() == values.size());
+  assert(0.0 <= fall && fall < rise);
+  std::vector<NucleationAttempt> attempts;
+  bool above = false;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!above) {
+      if (!(values[i] > rise)) continue;
+      above = true;
+      attempts.push_back({times[i], times[i], values[i], std::numeric_limits<double>::quiet_NaN()});
+      continue;
+    }
+    NucleationAttempt& current = attempts.back();
+    if (values[i] > current.peak) {
+      current.peak = values[i];
+      current.peak_time = times[i];
+    }
+    if (values[i] < fall) {
+      current.end = times[i];
+      above = false;
+    }
+  }
+  return attempts;
+}
+
 }  // namespace rodsort::metrics

@@ -3,6 +3,7 @@
 // paper's eta(t) at 115° rises and saturates near 0.9; near theta_c it shows spikes (failed
 // nucleation attempts) that rarely last.
 
+#include <cmath>
 #include <vector>
 
 namespace rodsort::metrics {
@@ -19,5 +20,24 @@ struct PlateauStats {
 /// times ascending, as many as values; smoothing >= 1 samples (1: the raw series).
 PlateauStats plateau_stats(const std::vector<double>& times, const std::vector<double>& values,
                            int smoothing = 1);
+
+/// A rise of the series above a level: a nucleation attempt when the series is eta_trap. It fails
+/// when the series falls back below a lower level; the two levels keep the noise of a series near
+/// one of them from counting as many attempts.
+struct NucleationAttempt {
+  double start = 0.0;      ///< [s] first sample above the rise level
+  double peak_time = 0.0;  ///< [s] of the highest sample
+  double peak = 0.0;
+  /// [s] first sample below the fall level after the start: the attempt failed there. NaN while
+  /// the series has not fallen back when it ends (the attempt holds).
+  double end = 0.0;
+  bool failed() const { return !std::isnan(end); }
+};
+
+/// The attempts of a series, in time order: each begins when the series exceeds `rise` and ends
+/// when it drops below `fall` (0 <= fall < rise). times ascending, as many as values.
+std::vector<NucleationAttempt> nucleation_attempts(const std::vector<double>& times,
+                                                   const std::vector<double>& values, double rise,
+                                                   double fall);
 
 }  // namespace rodsort::metrics

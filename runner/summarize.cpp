@@ -10,9 +10,13 @@
 #include <vector>
 
 #include "metrics/critical_angle.hpp"
+#include "metrics/time_series.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/run_record.hpp"
+#include "runner/run_summary.hpp"
 #include "runner/sweep.hpp"
 #include "scenarios/number_text.hpp"
 
@@ -207,6 +211,109 @@ int summarize_sweep(const std::filesystem::path& sweep_directory, std::ostream& 
   out << "eta: trapping efficiency averaged over the last half of each run\n";
   print_aligned(out, printed);
   if (table.column(kAngleKey)) report_critical_angles(sweep_directory, table, keys, out);
+  return kExitOk;
+}
+
+namespace {
+
+/// The window of the eta means: the first of 1, 2, 5 x 10^k s that cuts `duration_s` into at most
+/// 10 pieces.
+double round_window(double duration_s) {
+  for (double decade = 1.0;; decade *= 10.0) {
+    for (const double step : {1.0, 2.0, 5.0}) {
+      if (duration_s <= 10.0 * step * decade) return step * decade;
+    }
+  }
+}
+
+std::string format(const char* pattern, double value) {
+  char text[48];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+void summarize_history(const std::filesystem::path& run_directory, const RunHistoryOptions& options,
+                       std::ostream& out) {
+  const RunSummary summary = summarize_run(run_directory);
+  const auto record = read_run_record(run_directory);
+  const CsvTable table = read_csv(run_directory / kMetricsCsvFile);
+  const auto time_column = table.column("t");
+  const std::vector<double> times =
+      time_column ? table.numbers(*time_column) : std::vector<double>{};
+  // metrics.csv goes on after the last checkpoint, which run.json's simulated_s counts.
+  const double reached_s = times.empty() ? summary.simulated_s : times.back();
+  out << run_directory.string() << ": " << record->name << ", " << record->rods
+      << " rods, t = " << format("%g", reached_s) << " of " << format("%g", record->duration_s)
+      << " s, " << summary.status << ", " << format("%.3g", summary.cpu_per_simulated_s)
+      << " CPU-s per simulated s\n";
+  if (times.empty()) {
+    out << "  no rows in metrics.csv yet\n";
+    return;
+  }
+  const std::vector<double> eta = table.numbers(*table.column("eta"));
+  const auto trap_column = table.column("eta_trap");
+  const std::vector<double> eta_trap = trap_column ? table.numbers(*trap_column) : eta;
+  const char* trap_name = trap_column ? "eta_trap" : "eta";
+
+  out << "  last half (" << format("%g", 0.5 * (times.front() + times.back())) << "-"
+      << format("%g", times.back()) << " s): eta " << format("%.3g", summary.plateau_mean())
+      << " (spread " << format("%.2g", summary.eta_spread) << ")";
+  if (trap_column) out << ", eta_trap " << format("%.3g", summary.plateau_mean("eta_trap"));
+  out << "; eta first at 90% of it at " << format("%.4g", summary.eta_time_to_90) << " s\n";
+
+  const double window = options.window_s > 0.0 ? options.window_s : round_window(times.back());
+  out << "  per " << format("%g", window) << " s, eta" << (trap_column ? " / eta_trap" : "") << ":";
+  for (double from = 0.0; from < times.back(); from += window) {
+    double sum = 0.0, trap_sum = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      if (times[i] < from || times[i] >= from + window) continue;
+      sum += eta[i];
+      trap_sum += eta_trap[i];
+      ++count;
+    }
+    if (count == 0) continue;
+    out << "  " << format("%g", from) << "-" << format("%g", from + window) << " "
+        << format("%.2f", sum / count);
+    if (trap_column) out << "/" << format("%.2f", trap_sum / count);
+  }
+  out << "\n";
+
+  const auto attempts = metrics::nucleation_attempts(times, eta_trap, options.rise, options.fall);
+  const auto failed = std::count_if(attempts.begin(), attempts.end(),
+                                    [](const auto& attempt) { return attempt.failed(); });
+  out << "  nucleation attempts (" << trap_name << " above " << format("%g", options.rise)
+      << ", failed when back below " << format("%g", options.fall) << "): " << attempts.size()
+      << ", " << failed << " failed\n";
+  for (const auto& attempt : attempts) {
+    out << "    from " << format("%g", attempt.start) << " s, peak " << format("%.2f", attempt.peak)
+        << " at " << format("%g", attempt.peak_time) << " s, ";
+    if (attempt.failed()) {
+      out << "fell back at " << format("%g", attempt.end) << " s\n";
+    } else {
+      out << "holds at the end (" << format("%.2f", eta_trap.back()) << ")\n";
+    }
+  }
+}
+
+}  // namespace
+
+int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
+                   const RunHistoryOptions& options, std::ostream& out, std::ostream& err) {
+  if (!(0.0 <= options.fall && options.fall < options.rise)) {
+    err << "rodsort: --fall must lie in [0, --rise); got --rise " << options.rise << " and --fall "
+        << options.fall << "\n";
+    return kExitUsage;
+  }
+  for (const auto& directory : run_directories) {
+    if (!read_run_record(directory) || !std::filesystem::exists(directory / kMetricsCsvFile)) {
+      err << "rodsort: " << directory.string()
+          << " is neither a sweep directory (sweep.csv) nor a run directory (run.json and "
+          << kMetricsCsvFile << ")\n";
+      return kExitUsage;
+    }
+  }
+  for (const auto& directory : run_directories) summarize_history(directory, options, out);
   return kExitOk;
 }
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <vector>
 
 namespace rodsort::runner {
 
@@ -13,5 +14,21 @@ namespace rodsort::runner {
 /// swept.
 int summarize_sweep(const std::filesystem::path& sweep_directory, std::ostream& out,
                     std::ostream& err);
+
+/// How `rodsort summarize` reads the eta(t) of run directories.
+struct RunHistoryOptions {
+  /// A nucleation attempt begins when eta_trap (eta in a run without it) rises above `rise` and
+  /// has failed when it falls back below `fall`.
+  double rise = 0.3;
+  double fall = 0.1;
+  /// [s] length of the windows of the eta means; 0: a round length that makes at most 10.
+  double window_s = 0.0;
+};
+
+/// `rodsort summarize RUN_DIR...`: for each run, how far it got, eta and eta_trap over the last
+/// half, when eta first reached 90% of that, their means per window, and its nucleation attempts
+/// (metrics::nucleation_attempts). Exit 2 for a directory that holds no run.
+int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
+                   const RunHistoryOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace rodsort::runner

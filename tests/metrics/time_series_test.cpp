@@ -44,3 +44,29 @@ TEST_CASE("a series that never rises has no time to plateau", "[metrics]") {
   CHECK(stats.mean == 0.0);
   CHECK(std::isnan(stats.time_to_90));
 }
+
+TEST_CASE("nucleation attempts: rises above one level, failures below a lower one", "[metrics]") {
+  // A spike to 0.5 that collapses, noise around 0.3 (between the levels, not new attempts), a
+  // second collapse, then a pile that grows to 0.9 and holds to the end.
+  const std::vector<double> eta = {0.0,  0.2, 0.5,  0.4, 0.05, 0.0, 0.35, 0.28, 0.32,
+                                   0.29, 0.6, 0.08, 0.2, 0.4,  0.7, 0.9,  0.85, 0.9};
+  std::vector<double> t;
+  for (std::size_t k = 0; k < eta.size(); ++k) t.push_back(10.0 * static_cast<double>(k));
+  const auto attempts = nucleation_attempts(t, eta, 0.3, 0.1);
+  REQUIRE(attempts.size() == 3);
+  CHECK(attempts[0].start == 20.0);
+  CHECK(attempts[0].peak == 0.5);
+  CHECK(attempts[0].end == 40.0);
+  CHECK(attempts[0].failed());
+  // 0.35 at 60 s starts the second; the dips to 0.28 and 0.29 do not end it.
+  CHECK(attempts[1].start == 60.0);
+  CHECK(attempts[1].peak == 0.6);
+  CHECK(attempts[1].peak_time == 100.0);
+  CHECK(attempts[1].end == 110.0);
+  CHECK(attempts[2].start == 130.0);
+  CHECK(attempts[2].peak == 0.9);
+  CHECK(attempts[2].peak_time == 150.0);  // the first of the equal highest samples
+  CHECK_FALSE(attempts[2].failed());
+  // A series that never rises above the level has none.
+  CHECK(nucleation_attempts(t, std::vector<double>(t.size(), 0.25), 0.3, 0.1).empty());
+}

@@ -1,0 +1,111 @@
+// `rodsort summarize RUN_DIR...`: eta(t) of runs in windows, and their nucleation attempts.
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "rodsort_program.hpp"
+#include "runner/atomic_file.hpp"
+#include "runner/exit_code.hpp"
+#include "runner/run_directory.hpp"
+#include "runner/run_record.hpp"
+#include "runner/summarize.hpp"
+#include "support/temp_directory.hpp"
+
+using namespace rodsort::runner;
+using rodsort::testing::TempDirectory;
+
+namespace {
+
+/// A complete 100 s run whose eta_trap spikes to 0.6 between 10 and 20 s, falls back to 0 at
+/// 20 s, rises again at 50 s and holds at 0.8; eta is eta_trap + 0.1 throughout.
+void write_history(const std::filesystem::path& directory) {
+  std::filesystem::create_directories(directory);
+  RunRecord record;
+  record.name = "spiky";
+  record.status = RunStatus::kComplete;
+  record.rods = 40;
+  record.dt_s = 1e-4;
+  record.duration_s = 100.0;
+  record.simulated_s = 100.0;
+  record.steps = record.total_steps = 1000000;
+  record.cpu_s = 200.0;
+  write_file_atomically(directory / kRunRecordFile, to_json(record));
+  std::ofstream metrics(directory / kMetricsCsvFile);
+  metrics << "t,eta,eta_trap,n_rods\n";
+  for (int k = 1; k <= 1000; ++k) {
+    const double t = 0.1 * k;
+    const double trap = t >= 10.0 && t < 20.0 ? 0.6 : t >= 50.0 ? 0.8 : 0.0;
+    metrics << t << ',' << trap + 0.1 << ',' << trap << ",40\n";
+  }
+}
+
+}  // namespace
+
+TEST_CASE("summarize reads a run's eta(t): windows, plateau and nucleation attempts",
+          "[runner][summarize]") {
+  TempDirectory scratch;
+  write_history(scratch / "run");
+  std::ostringstream out, err;
+  REQUIRE(summarize_runs({scratch / "run"}, RunHistoryOptions{}, out, err) == kExitOk);
+  const std::string text = out.str();
+  INFO(text);
+  CHECK_THAT(text, Catch::Contains("spiky, 40 rods, t = 100 of 100 s, complete, 2 CPU-s"));
+  // Last half, 50.05-100 s: eta_trap 0.8 throughout, eta 0.9.
+  CHECK_THAT(text, Catch::Contains("eta 0.9 (spread") && Catch::Contains("eta_trap 0.8;"));
+  // Ten windows of 10 s; the second holds the spike (0.6 from 10 to 20 s: 10.0 is the window's
+  // first sample after rounding, so 0.7 / 0.6 or very near).
+  CHECK_THAT(text, Catch::Contains("per 10 s, eta / eta_trap:  0-10 0.10/0.00"));
+  CHECK_THAT(text, Catch::Contains("90-100 0.90/0.80"));
+  CHECK_THAT(text, Catch::Contains("nucleation attempts (eta_trap above 0.3, failed when back "
+                                   "below 0.1): 2, 1 failed"));
+  CHECK_THAT(text, Catch::Contains("from 10 s, peak 0.60 at 10 s, fell back at 20 s"));
+  CHECK_THAT(text, Catch::Contains("from 50 s, peak 0.80 at 50 s, holds at the end (0.80)"));
+
+  // Levels above the spike: only the pile that holds counts.
+  RunHistoryOptions high;
+  high.rise = 0.7;
+  high.fall = 0.5;
+  high.window_s = 50.0;
+  std::ostringstream out_high, err_high;
+  REQUIRE(summarize_runs({scratch / "run"}, high, out_high, err_high) == kExitOk);
+  CHECK_THAT(out_high.str(),
+             Catch::Contains("above 0.7, failed when back below 0.5): 1, 0 failed"));
+  CHECK_THAT(out_high.str(), Catch::Contains("per 50 s, eta / eta_trap:  0-50 0.22/0.12  50-100 "
+                                             "0.90/0.80"));
+}
+
+TEST_CASE("summarize refuses a directory without a run and levels out of order",
+          "[runner][summarize]") {
+  TempDirectory scratch;
+  write_history(scratch / "run");
+  std::ostringstream out, err;
+  CHECK(summarize_runs({scratch / "run", scratch.path()}, RunHistoryOptions{}, out, err) ==
+        kExitUsage);
+  CHECK_THAT(err.str(), Catch::Contains("is neither a sweep directory"));
+  CHECK(out.str().empty());  // nothing printed before the refusal
+  RunHistoryOptions reversed;
+  reversed.rise = 0.1;
+  reversed.fall = 0.3;
+  std::ostringstream out_reversed, err_reversed;
+  CHECK(summarize_runs({scratch / "run"}, reversed, out_reversed, err_reversed) == kExitUsage);
+  CHECK_THAT(err_reversed.str(), Catch::Contains("--fall must lie in [0, --rise)"));
+}
+
+TEST_CASE("rodsort summarize takes one sweep directory or run directories, not both",
+          "[runner][summarize]") {
+  TempDirectory scratch;
+  write_history(scratch / "run");
+  const auto runs = rodsort::runner::testing::run_rodsort(
+      {"summarize", (scratch / "run").string(), "--window", "25"}, scratch.path());
+  CHECK(runs.status == kExitOk);
+  CHECK_THAT(runs.out, Catch::Contains("per 25 s, eta / eta_trap:"));
+  std::filesystem::create_directories(scratch / "sweep");
+  std::ofstream(scratch / "sweep" / "sweep.csv") << "point,status\n";
+  const auto mixed = rodsort::runner::testing::run_rodsort(
+      {"summarize", (scratch / "sweep").string(), (scratch / "run").string()}, scratch.path());
+  CHECK(mixed.status == kExitUsage);
+  CHECK_THAT(mixed.err, Catch::Contains("give one sweep directory, or one or more run "
+                                        "directories"));
+}
