@@ -59,6 +59,10 @@ Command add_summarize_command(CLI::App& app) {
                    "Runs: length of the windows of the eta means [s] (default: a round length "
                    "that makes at most 10)")
       ->check(positive_number());
+  command
+      ->add_option("--until", options->history.until_s,
+                   "Runs: read eta(t) up to this time [s] (runs of different lengths compared)")
+      ->check(positive_number());
   return {command, [options] { return summarize(*options); }};
 }
 

@@ -236,18 +236,29 @@ void summarize_history(const std::filesystem::path& run_directory, const RunHist
                        std::ostream& out) {
   const RunSummary summary = summarize_run(run_directory);
   const auto record = read_run_record(run_directory);
-  const CsvTable table = read_csv(run_directory / kMetricsCsvFile);
+  CsvTable table = read_csv(run_directory / kMetricsCsvFile);
   const auto time_column = table.column("t");
+  if (time_column && options.until_s > 0.0) {
+    const std::vector<double> all_times = table.numbers(*time_column);
+    std::vector<std::vector<std::string>> kept;
+    for (std::size_t i = 0; i < all_times.size() && all_times[i] <= options.until_s; ++i) {
+      kept.push_back(std::move(table.rows[i]));
+    }
+    table.rows = std::move(kept);
+  }
   const std::vector<double> times =
       time_column ? table.numbers(*time_column) : std::vector<double>{};
   // metrics.csv goes on after the last checkpoint, which run.json's simulated_s counts.
-  const double reached_s = times.empty() ? summary.simulated_s : times.back();
+  const double reached_s = time_column && !table.rows.empty() && options.until_s <= 0.0
+                               ? times.back()
+                               : summary.simulated_s;
   out << run_directory.string() << ": " << record->name << ", " << record->rods
       << " rods, t = " << format("%g", reached_s) << " of " << format("%g", record->duration_s)
       << " s, " << summary.status << ", " << format("%.3g", summary.cpu_per_simulated_s)
       << " CPU-s per simulated s\n";
+  if (options.until_s > 0.0) out << "  up to t = " << format("%g", options.until_s) << " s\n";
   if (times.empty()) {
-    out << "  no rows in metrics.csv yet\n";
+    out << "  no rows in metrics.csv" << (options.until_s > 0.0 ? " up to then\n" : " yet\n");
     return;
   }
   const std::vector<double> eta = table.numbers(*table.column("eta"));
@@ -255,11 +266,14 @@ void summarize_history(const std::filesystem::path& run_directory, const RunHist
   const std::vector<double> eta_trap = trap_column ? table.numbers(*trap_column) : eta;
   const char* trap_name = trap_column ? "eta_trap" : "eta";
 
+  const metrics::PlateauStats eta_stats = metrics::plateau_stats(times, eta);
   out << "  last half (" << format("%g", 0.5 * (times.front() + times.back())) << "-"
-      << format("%g", times.back()) << " s): eta " << format("%.3g", summary.plateau_mean())
-      << " (spread " << format("%.2g", summary.eta_spread) << ")";
-  if (trap_column) out << ", eta_trap " << format("%.3g", summary.plateau_mean("eta_trap"));
-  out << "; eta first at 90% of it at " << format("%.4g", summary.eta_time_to_90) << " s\n";
+      << format("%g", times.back()) << " s): eta " << format("%.3g", eta_stats.mean) << " (spread "
+      << format("%.2g", eta_stats.spread) << ")";
+  if (trap_column) {
+    out << ", eta_trap " << format("%.3g", metrics::plateau_stats(times, eta_trap).mean);
+  }
+  out << "; eta first at 90% of it at " << format("%.4g", eta_stats.time_to_90) << " s\n";
 
   const double window = options.window_s > 0.0 ? options.window_s : round_window(times.back());
   out << "  per " << format("%g", window) << " s, eta" << (trap_column ? " / eta_trap" : "") << ":";

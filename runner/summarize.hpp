@@ -23,6 +23,8 @@ struct RunHistoryOptions {
   double fall = 0.1;
   /// [s] length of the windows of the eta means; 0: a round length that makes at most 10.
   double window_s = 0.0;
+  /// [s] read the rows up to this time only (0: all), to compare runs of different lengths.
+  double until_s = 0.0;
 };
 
 /// `rodsort summarize RUN_DIR...`: for each run, how far it got, eta and eta_trap over the last

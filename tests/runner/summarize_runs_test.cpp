@@ -74,6 +74,16 @@ TEST_CASE("summarize reads a run's eta(t): windows, plateau and nucleation attem
              Catch::Contains("above 0.7, failed when back below 0.5): 1, 0 failed"));
   CHECK_THAT(out_high.str(), Catch::Contains("per 50 s, eta / eta_trap:  0-50 0.22/0.12  50-100 "
                                              "0.90/0.80"));
+
+  // Up to 40 s: the spike alone, fallen back, and a last half (20-40 s) at 0.
+  RunHistoryOptions early;
+  early.until_s = 40.0;
+  std::ostringstream out_early, err_early;
+  REQUIRE(summarize_runs({scratch / "run"}, early, out_early, err_early) == kExitOk);
+  CHECK_THAT(out_early.str(), Catch::Contains("up to t = 40 s"));
+  CHECK_THAT(out_early.str(), Catch::Contains("last half (20.05-40 s): eta 0.1 (spread"));
+  CHECK_THAT(out_early.str(), Catch::Contains("): 1, 1 failed"));
+  CHECK_THAT(out_early.str(), Catch::Contains("per 5 s, eta / eta_trap:"));
 }
 
 TEST_CASE("summarize refuses a directory without a run and levels out of order",
