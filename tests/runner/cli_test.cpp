@@ -24,6 +24,20 @@ namespace {
 
 const std::string kTiny = RODSORT_SOURCE_DIR "/tests/runner/data/tiny.yaml";
 
+/// Starts a 10 s run of the tiny scenario in `run` and returns its process once its first frames
+/// are on disk: long enough that it is still running then.
+pid_t start_tiny_run(const TempDirectory& scratch, const std::filesystem::path& run) {
+  const pid_t pid = rodsort::runner::testing::start_rodsort(
+      {"run", kTiny, "-o", run.string(), "--set", "run.duration=10", "--set",
+       "output.checkpoint_interval=5"},
+      scratch / "out.txt", scratch / "err.txt");
+  const auto rods = run / kRodsCsvFile;
+  while (!std::filesystem::exists(rods) || std::filesystem::file_size(rods) < 2000) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return pid;
+}
+
 }  // namespace
 
 TEST_CASE("every subcommand has help", "[runner][cli]") {
@@ -77,15 +91,7 @@ TEST_CASE("validate prints the resolved scenario, or the errors", "[runner][cli]
 TEST_CASE("a run stopped by SIGINT exits 130 and resumes to completion", "[runner][cli]") {
   TempDirectory scratch;
   const auto run = scratch / "run";
-  // Long enough that it is still running when its first frames are on disk.
-  const pid_t pid = rodsort::runner::testing::start_rodsort(
-      {"run", kTiny, "-o", run.string(), "--set", "run.duration=10", "--set",
-       "output.checkpoint_interval=5"},
-      scratch / "out.txt", scratch / "err.txt");
-  const auto rods = run / kRodsCsvFile;
-  while (!std::filesystem::exists(rods) || std::filesystem::file_size(rods) < 2000) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  const pid_t pid = start_tiny_run(scratch, run);
   kill(pid, SIGINT);
   REQUIRE(rodsort::runner::testing::wait_rodsort(pid) == kExitInterrupted);
   const auto stopped = read_run_record(run);
@@ -106,14 +112,7 @@ TEST_CASE("a run sent SIGTERM twice at once, as timeout does, still writes its c
           "[runner][cli]") {
   TempDirectory scratch;
   const auto run = scratch / "run";
-  const pid_t pid = rodsort::runner::testing::start_rodsort(
-      {"run", kTiny, "-o", run.string(), "--set", "run.duration=10", "--set",
-       "output.checkpoint_interval=5"},
-      scratch / "out.txt", scratch / "err.txt");
-  const auto rods = run / kRodsCsvFile;
-  while (!std::filesystem::exists(rods) || std::filesystem::file_size(rods) < 2000) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  const pid_t pid = start_tiny_run(scratch, run);
   // The child and then its process group: the second copy comes while the first is handled.
   kill(pid, SIGTERM);
   std::this_thread::sleep_for(std::chrono::milliseconds(5));
