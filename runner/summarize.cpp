@@ -261,7 +261,12 @@ void summarize_history(const std::filesystem::path& run_directory, const RunHist
     out << "  no rows in metrics.csv" << (options.until_s > 0.0 ? " up to then\n" : " yet\n");
     return;
   }
-  const std::vector<double> eta = table.numbers(*table.column("eta"));
+  const auto eta_column = table.column("eta");
+  if (!eta_column) {
+    out << "  no column eta in metrics.csv: a run without a trap has no eta(t)\n";
+    return;
+  }
+  const std::vector<double> eta = table.numbers(*eta_column);
   const auto trap_column = table.column("eta_trap");
   const std::vector<double> eta_trap = trap_column ? table.numbers(*trap_column) : eta;
   const char* trap_name = trap_column ? "eta_trap" : "eta";

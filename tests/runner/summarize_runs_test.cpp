@@ -95,6 +95,13 @@ TEST_CASE("summarize refuses a directory without a run and levels out of order",
         kExitUsage);
   CHECK_THAT(err.str(), Catch::Contains("is neither a sweep directory"));
   CHECK(out.str().empty());  // nothing printed before the refusal
+
+  // A run without a trap writes no eta column: said, not read.
+  std::ofstream(scratch / "run" / kMetricsCsvFile) << "t,n_rods\n0.07,40\n";
+  std::ostringstream out_trapless, err_trapless;
+  CHECK(summarize_runs({scratch / "run"}, RunHistoryOptions{}, out_trapless, err_trapless) ==
+        kExitOk);
+  CHECK_THAT(out_trapless.str(), Catch::Contains("no column eta in metrics.csv"));
   RunHistoryOptions reversed;
   reversed.rise = 0.1;
   reversed.fall = 0.3;
