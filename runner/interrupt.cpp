@@ -45,6 +45,10 @@ InterruptGuard::InterruptGuard() {
 }
 
 InterruptGuard::~InterruptGuard() {
+  // After a signal the process is on its way out with status 130; a repeat that comes while it
+  // exits (after the checkpoint, during the sanitizers' exit checks, say) is still the same
+  // request, so the handler stays.
+  if (g_received != 0) return;
   sigaction(SIGINT, &g_previous_int, nullptr);
   sigaction(SIGTERM, &g_previous_term, nullptr);
 }

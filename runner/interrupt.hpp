@@ -11,7 +11,8 @@ namespace rodsort::runner {
 
 class InterruptGuard {
  public:
-  /// Installs the handlers; the previous ones come back when the guard is destroyed.
+  /// Installs the handlers; the previous ones come back when the guard is destroyed, unless a
+  /// signal came (the handlers then stay, so that a repeat during the exit changes nothing).
   InterruptGuard();
   ~InterruptGuard();
   InterruptGuard(const InterruptGuard&) = delete;
