@@ -22,19 +22,23 @@ double RunSummary::plateau_mean(const std::string& column) const {
   return kNaN;
 }
 
+std::string run_status(const std::filesystem::path& run_directory, const RunRecord& record) {
+  // run.json says "running" until the run ends; a run killed outright (SIGKILL, power cut) never
+  // ends, so only a held lock says it is still going.
+  if (record.status == RunStatus::kRunning &&
+      std::filesystem::exists(run_directory / kRunLockFile) && RunLock::acquire(run_directory)) {
+    return "stopped";
+  }
+  return to_string(record.status);
+}
+
 RunSummary summarize_run(const std::filesystem::path& run_directory) {
   RunSummary summary;
   summary.eta_spread = kNaN;
   summary.eta_time_to_90 = kNaN;
   const auto record = read_run_record(run_directory);
   if (!record) return summary;
-  summary.status = to_string(record->status);
-  // run.json says "running" until the run ends; a run killed outright (SIGKILL, power cut) never
-  // ends, so only a held lock says it is still going.
-  if (record->status == RunStatus::kRunning &&
-      std::filesystem::exists(run_directory / kRunLockFile) && RunLock::acquire(run_directory)) {
-    summary.status = "stopped";
-  }
+  summary.status = run_status(run_directory, *record);
   summary.simulated_s = record->simulated_s;
   summary.wall_s = record->wall_s;
   summary.cpu_per_simulated_s = record->cpu_per_simulated_second();

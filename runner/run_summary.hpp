@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "runner/run_record.hpp"
+
 namespace rodsort::runner {
 
 struct RunSummary {
@@ -27,6 +29,10 @@ struct RunSummary {
   /// The plateau mean of one column; NaN when absent.
   double plateau_mean(const std::string& column = "eta") const;
 };
+
+/// The status of a run as its record gives it, but "stopped" where the record says "running" and
+/// no process holds the run's lock (it was killed; `rodsort run --resume` continues it).
+std::string run_status(const std::filesystem::path& run_directory, const RunRecord& record);
 
 /// Reads run.json and metrics.csv of a run directory. A directory without them is "pending".
 /// Throws std::runtime_error naming the file when one exists but cannot be read.

@@ -234,12 +234,14 @@ std::string format(const char* pattern, double value) {
 
 void summarize_history(const std::filesystem::path& run_directory, const RunHistoryOptions& options,
                        std::ostream& out) {
-  const RunSummary summary = summarize_run(run_directory);
-  const auto record = read_run_record(run_directory);
+  const RunRecord record = *read_run_record(run_directory);
   CsvTable table = read_csv(run_directory / kMetricsCsvFile);
   const auto time_column = table.column("t");
-  if (time_column && options.until_s > 0.0) {
-    const std::vector<double> all_times = table.numbers(*time_column);
+  const std::vector<double> all_times =
+      time_column ? table.numbers(*time_column) : std::vector<double>{};
+  // metrics.csv goes on after the last checkpoint, which run.json's simulated_s counts.
+  const double reached_s = all_times.empty() ? record.simulated_s : all_times.back();
+  if (options.until_s > 0.0) {
     std::vector<std::vector<std::string>> kept;
     for (std::size_t i = 0; i < all_times.size() && all_times[i] <= options.until_s; ++i) {
       kept.push_back(std::move(table.rows[i]));
@@ -248,14 +250,10 @@ void summarize_history(const std::filesystem::path& run_directory, const RunHist
   }
   const std::vector<double> times =
       time_column ? table.numbers(*time_column) : std::vector<double>{};
-  // metrics.csv goes on after the last checkpoint, which run.json's simulated_s counts.
-  const double reached_s = time_column && !table.rows.empty() && options.until_s <= 0.0
-                               ? times.back()
-                               : summary.simulated_s;
-  out << run_directory.string() << ": " << record->name << ", " << record->rods
-      << " rods, t = " << format("%g", reached_s) << " of " << format("%g", record->duration_s)
-      << " s, " << summary.status << ", " << format("%.3g", summary.cpu_per_simulated_s)
-      << " CPU-s per simulated s\n";
+  out << run_directory.string() << ": " << record.name << ", " << record.rods
+      << " rods, t = " << format("%g", reached_s) << " of " << format("%g", record.duration_s)
+      << " s, " << run_status(run_directory, record) << ", "
+      << format("%.3g", record.cpu_per_simulated_second()) << " CPU-s per simulated s\n";
   if (options.until_s > 0.0) out << "  up to t = " << format("%g", options.until_s) << " s\n";
   if (times.empty()) {
     out << "  no rows in metrics.csv" << (options.until_s > 0.0 ? " up to then\n" : " yet\n");

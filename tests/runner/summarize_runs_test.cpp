@@ -9,6 +9,7 @@
 #include "runner/atomic_file.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
+#include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
 #include "runner/summarize.hpp"
 #include "support/temp_directory.hpp"
@@ -84,6 +85,22 @@ TEST_CASE("summarize reads a run's eta(t): windows, plateau and nucleation attem
   CHECK_THAT(out_early.str(), Catch::Contains("last half (20.05-40 s): eta 0.1 (spread"));
   CHECK_THAT(out_early.str(), Catch::Contains("): 1, 1 failed"));
   CHECK_THAT(out_early.str(), Catch::Contains("per 5 s, eta / eta_trap:"));
+  CHECK_THAT(out_early.str(), Catch::Contains("t = 100 of 100 s"));  // how far the run got
+
+  // A run killed after its checkpoint at 60 s: run.json says running, no process holds its lock,
+  // and metrics.csv goes on to 100 s.
+  RunRecord killed = *read_run_record(scratch / "run");
+  killed.status = RunStatus::kRunning;
+  killed.simulated_s = 60.0;
+  write_file_atomically(scratch / "run" / kRunRecordFile, to_json(killed));
+  std::ofstream(scratch / "run" / kRunLockFile).flush();
+  for (const double until_s : {0.0, 40.0}) {
+    RunHistoryOptions options;
+    options.until_s = until_s;
+    std::ostringstream out_killed, err_killed;
+    REQUIRE(summarize_runs({scratch / "run"}, options, out_killed, err_killed) == kExitOk);
+    CHECK_THAT(out_killed.str(), Catch::Contains("t = 100 of 100 s, stopped"));
+  }
 }
 
 TEST_CASE("summarize refuses a directory without a run and levels out of order",
