@@ -237,19 +237,15 @@ void summarize_history(const std::filesystem::path& run_directory, const RunHist
   const RunRecord record = *read_run_record(run_directory);
   CsvTable table = read_csv(run_directory / kMetricsCsvFile);
   const auto time_column = table.column("t");
-  const std::vector<double> all_times =
-      time_column ? table.numbers(*time_column) : std::vector<double>{};
+  std::vector<double> times = time_column ? table.numbers(*time_column) : std::vector<double>{};
   // metrics.csv goes on after the last checkpoint, which run.json's simulated_s counts.
-  const double reached_s = all_times.empty() ? record.simulated_s : all_times.back();
+  const double reached_s = times.empty() ? record.simulated_s : times.back();
   if (options.until_s > 0.0) {
-    std::vector<std::vector<std::string>> kept;
-    for (std::size_t i = 0; i < all_times.size() && all_times[i] <= options.until_s; ++i) {
-      kept.push_back(std::move(table.rows[i]));
-    }
-    table.rows = std::move(kept);
+    std::size_t kept = 0;
+    while (kept < times.size() && times[kept] <= options.until_s) ++kept;
+    table.rows.resize(kept);
+    times.resize(kept);
   }
-  const std::vector<double> times =
-      time_column ? table.numbers(*time_column) : std::vector<double>{};
   out << run_directory.string() << ": " << record.name << ", " << record.rods
       << " rods, t = " << format("%g", reached_s) << " of " << format("%g", record.duration_s)
       << " s, " << run_status(run_directory, record) << ", "
