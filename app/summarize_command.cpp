@@ -22,6 +22,11 @@ int summarize(const SummarizeOptions& options) {
     return std::filesystem::exists(std::filesystem::path(path) / "sweep.csv");
   };
   if (options.paths.size() == 1 && is_sweep(options.paths.front())) {
+    if (!options.history.csv.empty()) {
+      std::cerr << "rodsort: --csv is for run directories; a sweep's table is its sweep.csv ("
+                << options.paths.front() << ")\n";
+      return runner::kExitUsage;
+    }
     return runner::summarize_sweep(options.paths.front(), std::cout, std::cerr);
   }
   for (const std::string& path : options.paths) {
@@ -63,6 +68,8 @@ Command add_summarize_command(CLI::App& app) {
       ->add_option("--until", options->history.until_s,
                    "Runs: read eta(t) up to this time [s] (runs of different lengths compared)")
       ->check(positive_number());
+  command->add_option("--csv", options->history.csv,
+                      "Runs: also write the figures to this CSV file, one row per run");
   return {command, [options] { return summarize(*options); }};
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "metrics/critical_angle.hpp"
@@ -232,81 +233,211 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
-void summarize_history(const std::filesystem::path& run_directory, const RunHistoryOptions& options,
-                       std::ostream& out) {
-  const RunRecord record = *read_run_record(run_directory);
+/// A number for the CSV: shortest round-trip text, "nan" when undefined.
+std::string csv_number(double value) {
+  return std::isfinite(value) ? scenarios::format_real(value) : "nan";
+}
+
+/// eta and eta_trap averaged over one window of a run.
+struct HistoryWindow {
+  double from = 0.0;
+  double to = 0.0;
+  double eta = 0.0;
+  double eta_trap = 0.0;  ///< eta again in a run without eta_trap
+};
+
+/// What `rodsort summarize` reads from one run's eta(t).
+struct RunHistory {
+  std::filesystem::path directory;
+  RunRecord record;
+  std::string status;      ///< run_status: complete, running, stopped, ...
+  double reached_s = 0.0;  ///< the last row of metrics.csv (before --until)
+  std::size_t rows = 0;    ///< rows read (up to --until)
+  bool has_eta = false;
+  bool has_trap = false;  ///< a column eta_trap; without it eta stands in for it
+  double half_from = 0.0;
+  double half_to = 0.0;
+  metrics::PlateauStats eta_stats;
+  double eta_trap_mean = 0.0;
+  double eta_max = 0.0;
+  double eta_trap_max = 0.0;
+  double eta_trap_last = 0.0;
+  double window = 0.0;
+  std::vector<HistoryWindow> windows;
+  std::vector<metrics::NucleationAttempt> attempts;
+};
+
+RunHistory read_history(const std::filesystem::path& run_directory,
+                        const RunHistoryOptions& options) {
+  RunHistory history;
+  history.directory = run_directory;
+  history.record = *read_run_record(run_directory);
+  history.status = run_status(run_directory, history.record);
   CsvTable table = read_csv(run_directory / kMetricsCsvFile);
   const auto time_column = table.column("t");
   std::vector<double> times = time_column ? table.numbers(*time_column) : std::vector<double>{};
   // metrics.csv goes on after the last checkpoint, which run.json's simulated_s counts.
-  const double reached_s = times.empty() ? record.simulated_s : times.back();
+  history.reached_s = times.empty() ? history.record.simulated_s : times.back();
   if (options.until_s > 0.0) {
     std::size_t kept = 0;
     while (kept < times.size() && times[kept] <= options.until_s) ++kept;
     table.rows.resize(kept);
     times.resize(kept);
   }
-  out << run_directory.string() << ": " << record.name << ", " << record.rods
-      << " rods, t = " << format("%g", reached_s) << " of " << format("%g", record.duration_s)
-      << " s, " << run_status(run_directory, record) << ", "
-      << format("%.3g", record.cpu_per_simulated_second()) << " CPU-s per simulated s\n";
-  if (options.until_s > 0.0) out << "  up to t = " << format("%g", options.until_s) << " s\n";
-  if (times.empty()) {
-    out << "  no rows in metrics.csv" << (options.until_s > 0.0 ? " up to then\n" : " yet\n");
-    return;
-  }
+  history.rows = times.size();
   const auto eta_column = table.column("eta");
-  if (!eta_column) {
-    out << "  no column eta in metrics.csv: a run without a trap has no eta(t)\n";
-    return;
-  }
+  history.has_eta = eta_column.has_value();
+  if (times.empty() || !eta_column) return history;
   const std::vector<double> eta = table.numbers(*eta_column);
   const auto trap_column = table.column("eta_trap");
+  history.has_trap = trap_column.has_value();
   const std::vector<double> eta_trap = trap_column ? table.numbers(*trap_column) : eta;
-  const char* trap_name = trap_column ? "eta_trap" : "eta";
 
-  const metrics::PlateauStats eta_stats = metrics::plateau_stats(times, eta);
-  out << "  last half (" << format("%g", 0.5 * (times.front() + times.back())) << "-"
-      << format("%g", times.back()) << " s): eta " << format("%.3g", eta_stats.mean) << " (spread "
-      << format("%.2g", eta_stats.spread) << ")";
-  if (trap_column) {
-    out << ", eta_trap " << format("%.3g", metrics::plateau_stats(times, eta_trap).mean);
-  }
-  out << "; eta first at 90% of it at " << format("%.4g", eta_stats.time_to_90) << " s\n";
+  history.half_from = 0.5 * (times.front() + times.back());
+  history.half_to = times.back();
+  history.eta_stats = metrics::plateau_stats(times, eta);
+  history.eta_trap_mean = metrics::plateau_stats(times, eta_trap).mean;
+  history.eta_max = *std::max_element(eta.begin(), eta.end());
+  history.eta_trap_max = *std::max_element(eta_trap.begin(), eta_trap.end());
+  history.eta_trap_last = eta_trap.back();
 
-  const double window = options.window_s > 0.0 ? options.window_s : round_window(times.back());
-  out << "  per " << format("%g", window) << " s, eta" << (trap_column ? " / eta_trap" : "") << ":";
-  for (double from = 0.0; from < times.back(); from += window) {
-    double sum = 0.0, trap_sum = 0.0;
+  history.window = options.window_s > 0.0 ? options.window_s : round_window(times.back());
+  for (double from = 0.0; from < times.back(); from += history.window) {
+    HistoryWindow window{from, from + history.window, 0.0, 0.0};
     int count = 0;
     for (std::size_t i = 0; i < times.size(); ++i) {
-      if (times[i] < from || times[i] >= from + window) continue;
-      sum += eta[i];
-      trap_sum += eta_trap[i];
+      if (times[i] < window.from || times[i] >= window.to) continue;
+      window.eta += eta[i];
+      window.eta_trap += eta_trap[i];
       ++count;
     }
     if (count == 0) continue;
-    out << "  " << format("%g", from) << "-" << format("%g", from + window) << " "
-        << format("%.2f", sum / count);
-    if (trap_column) out << "/" << format("%.2f", trap_sum / count);
+    window.eta /= count;
+    window.eta_trap /= count;
+    history.windows.push_back(window);
+  }
+  history.attempts = metrics::nucleation_attempts(times, eta_trap, options.rise, options.fall);
+  return history;
+}
+
+long failed_attempts(const RunHistory& history) {
+  return std::count_if(history.attempts.begin(), history.attempts.end(),
+                       [](const auto& attempt) { return attempt.failed(); });
+}
+
+void print_history(const RunHistory& history, const RunHistoryOptions& options, std::ostream& out) {
+  const RunRecord& record = history.record;
+  out << history.directory.string() << ": " << record.name << ", " << record.rods
+      << " rods, t = " << format("%g", history.reached_s) << " of "
+      << format("%g", record.duration_s) << " s, " << history.status << ", "
+      << format("%.3g", record.cpu_per_simulated_second()) << " CPU-s per simulated s\n";
+  if (options.until_s > 0.0) out << "  up to t = " << format("%g", options.until_s) << " s\n";
+  if (history.rows == 0) {
+    out << "  no rows in metrics.csv" << (options.until_s > 0.0 ? " up to then\n" : " yet\n");
+    return;
+  }
+  if (!history.has_eta) {
+    out << "  no column eta in metrics.csv: a run without a trap has no eta(t)\n";
+    return;
+  }
+  out << "  last half (" << format("%g", history.half_from) << "-" << format("%g", history.half_to)
+      << " s): eta " << format("%.3g", history.eta_stats.mean) << " (spread "
+      << format("%.2g", history.eta_stats.spread) << ")";
+  if (history.has_trap) out << ", eta_trap " << format("%.3g", history.eta_trap_mean);
+  out << "; eta first at 90% of it at " << format("%.4g", history.eta_stats.time_to_90) << " s\n";
+
+  out << "  per " << format("%g", history.window) << " s, eta"
+      << (history.has_trap ? " / eta_trap" : "") << ":";
+  for (const HistoryWindow& window : history.windows) {
+    out << "  " << format("%g", window.from) << "-" << format("%g", window.to) << " "
+        << format("%.2f", window.eta);
+    if (history.has_trap) out << "/" << format("%.2f", window.eta_trap);
   }
   out << "\n";
 
-  const auto attempts = metrics::nucleation_attempts(times, eta_trap, options.rise, options.fall);
-  const auto failed = std::count_if(attempts.begin(), attempts.end(),
-                                    [](const auto& attempt) { return attempt.failed(); });
-  out << "  nucleation attempts (" << trap_name << " above " << format("%g", options.rise)
-      << ", failed when back below " << format("%g", options.fall) << "): " << attempts.size()
-      << ", " << failed << " failed\n";
-  for (const auto& attempt : attempts) {
+  const long failed = failed_attempts(history);
+  out << "  nucleation attempts (" << (history.has_trap ? "eta_trap" : "eta") << " above "
+      << format("%g", options.rise) << ", failed when back below " << format("%g", options.fall)
+      << "): " << history.attempts.size() << ", " << failed << " failed\n";
+  for (const auto& attempt : history.attempts) {
     out << "    from " << format("%g", attempt.start) << " s, peak " << format("%.2f", attempt.peak)
         << " at " << format("%g", attempt.peak_time) << " s, ";
     if (attempt.failed()) {
       out << "fell back at " << format("%g", attempt.end) << " s\n";
     } else {
-      out << "holds at the end (" << format("%.2f", eta_trap.back()) << ")\n";
+      out << "holds at the end (" << format("%.2f", history.eta_trap_last) << ")\n";
     }
   }
+}
+
+/// One row per run: what print_history says, and a pair of columns per window (the union of all
+/// runs' windows, empty where a run has none).
+CsvTable history_table(const std::vector<RunHistory>& histories) {
+  std::map<std::pair<double, double>, std::size_t> window_columns;
+  for (const RunHistory& history : histories) {
+    for (const HistoryWindow& window : history.windows) window_columns[{window.from, window.to}];
+  }
+  CsvTable table;
+  table.header = {"run",
+                  "name",
+                  "seed",
+                  "rods",
+                  "reached_s",
+                  "duration_s",
+                  "status",
+                  "cpu_s_per_simulated_s",
+                  "read_to_s",
+                  "eta_mean",
+                  "eta_spread",
+                  "eta_trap_mean",
+                  "eta_time_to_90_s",
+                  "eta_max",
+                  "eta_trap_max",
+                  "attempts",
+                  "failed_attempts",
+                  "holds"};
+  for (auto& [window, column] : window_columns) {
+    column = table.header.size();
+    const std::string span =
+        scenarios::format_real(window.first) + "-" + scenarios::format_real(window.second);
+    table.header.push_back("eta_" + span);
+    table.header.push_back("eta_trap_" + span);
+  }
+  for (const RunHistory& history : histories) {
+    const RunRecord& record = history.record;
+    std::vector<std::string> row = {history.directory.string(),
+                                    record.name,
+                                    std::to_string(record.seed),
+                                    std::to_string(record.rods),
+                                    csv_number(history.reached_s),
+                                    csv_number(record.duration_s),
+                                    history.status,
+                                    csv_number(record.cpu_per_simulated_second())};
+    row.resize(table.header.size());
+    if (history.has_eta && history.rows > 0) {
+      const long failed = failed_attempts(history);
+      const bool holds = !history.attempts.empty() && !history.attempts.back().failed();
+      const std::vector<std::string> measures = {
+          csv_number(history.half_to),
+          csv_number(history.eta_stats.mean),
+          csv_number(history.eta_stats.spread),
+          history.has_trap ? csv_number(history.eta_trap_mean) : "",
+          csv_number(history.eta_stats.time_to_90),
+          csv_number(history.eta_max),
+          history.has_trap ? csv_number(history.eta_trap_max) : "",
+          std::to_string(history.attempts.size()),
+          std::to_string(failed),
+          holds ? "1" : "0"};
+      std::copy(measures.begin(), measures.end(), row.begin() + 8);
+      for (const HistoryWindow& window : history.windows) {
+        const std::size_t column = window_columns.at({window.from, window.to});
+        row[column] = csv_number(window.eta);
+        if (history.has_trap) row[column + 1] = csv_number(window.eta_trap);
+      }
+    }
+    table.rows.push_back(std::move(row));
+  }
+  return table;
 }
 
 }  // namespace
@@ -326,7 +457,24 @@ int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
       return kExitUsage;
     }
   }
-  for (const auto& directory : run_directories) summarize_history(directory, options, out);
+  if (!options.csv.empty()) {
+    const std::filesystem::path folder = options.csv.parent_path();
+    if (std::filesystem::is_directory(options.csv) ||
+        !(folder.empty() || std::filesystem::is_directory(folder))) {
+      err << "rodsort: --csv " << options.csv.string()
+          << ": expected a file name in an existing folder\n";
+      return kExitUsage;
+    }
+  }
+  std::vector<RunHistory> histories;
+  for (const auto& directory : run_directories) {
+    histories.push_back(read_history(directory, options));
+    print_history(histories.back(), options, out);
+  }
+  if (!options.csv.empty()) {
+    write_file_atomically(options.csv, csv_text(history_table(histories)));
+    out << "wrote " << options.csv.string() << '\n';
+  }
   return kExitOk;
 }
 

@@ -25,11 +25,14 @@ struct RunHistoryOptions {
   double window_s = 0.0;
   /// [s] read the rows up to this time only (0: all), to compare runs of different lengths.
   double until_s = 0.0;
+  /// When not empty, the same figures also go to this CSV file, one row per run.
+  std::filesystem::path csv;
 };
 
 /// `rodsort summarize RUN_DIR...`: for each run, how far it got, eta and eta_trap over the last
 /// half, when eta first reached 90% of that, their means per window, and its nucleation attempts
-/// (metrics::nucleation_attempts). Exit 2 for a directory that holds no run.
+/// (metrics::nucleation_attempts); with `options.csv`, the same as a table of one row per run. Exit
+/// 2 for a directory that holds no run or a CSV file whose folder does not exist.
 int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
                    const RunHistoryOptions& options, std::ostream& out, std::ostream& err);
 

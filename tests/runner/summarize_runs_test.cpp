@@ -7,6 +7,7 @@
 
 #include "rodsort_program.hpp"
 #include "runner/atomic_file.hpp"
+#include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_directory.hpp"
 #include "runner/run_lock.hpp"
@@ -103,6 +104,60 @@ TEST_CASE("summarize reads a run's eta(t): windows, plateau and nucleation attem
   }
 }
 
+TEST_CASE("summarize writes the runs' figures to a CSV file, one row per run",
+          "[runner][summarize]") {
+  TempDirectory scratch;
+  write_history(scratch / "long");
+  write_history(scratch / "short");
+  // The second run is 40 s long: only the first of the long run's windows, and its spike.
+  {
+    std::ofstream metrics(scratch / "short" / kMetricsCsvFile);
+    metrics << "t,eta,eta_trap,n_rods\n";
+    for (int k = 1; k <= 400; ++k) {
+      const double t = 0.1 * k;
+      metrics << t << ',' << (t >= 10.0 && t < 20.0 ? 0.7 : 0.1) << ','
+              << (t >= 10.0 && t < 20.0 ? 0.6 : 0.0) << ",40\n";
+    }
+  }
+  RunHistoryOptions options;
+  options.window_s = 50.0;
+  options.csv = scratch / "runs.csv";
+  std::ostringstream out, err;
+  REQUIRE(summarize_runs({scratch / "long", scratch / "short"}, options, out, err) == kExitOk);
+  CHECK_THAT(out.str(), Catch::Contains("wrote " + options.csv.string()));
+  const CsvTable table = read_csv(options.csv);
+  REQUIRE(table.rows.size() == 2);
+  const auto at = [&](std::size_t row, const char* column) {
+    const auto index = table.column(column);
+    REQUIRE(index);
+    return table.rows[row][*index];
+  };
+  CHECK(at(0, "name") == "spiky");
+  CHECK(at(0, "status") == "complete");
+  CHECK(std::stod(at(0, "eta_mean")) == Approx(0.9).margin(1e-9));
+  CHECK(std::stod(at(0, "eta_trap_mean")) == Approx(0.8).margin(1e-9));
+  CHECK(std::stod(at(0, "eta_trap_max")) == Approx(0.8).margin(1e-9));
+  CHECK(at(0, "attempts") == "2");
+  CHECK(at(0, "failed_attempts") == "1");
+  CHECK(at(0, "holds") == "1");
+  CHECK(std::stod(at(0, "eta_trap_50-100")) == Approx(0.8).margin(1e-9));
+  // The short run: read to 40 s, one failed attempt, one window of the two, the other empty.
+  CHECK(std::stod(at(1, "read_to_s")) == Approx(40.0));
+  CHECK(at(1, "attempts") == "1");
+  CHECK(at(1, "holds") == "0");
+  CHECK(std::stod(at(1, "eta_trap_max")) == Approx(0.6).margin(1e-9));
+  CHECK(std::stod(at(1, "eta_trap_0-50")) == Approx(0.6 * 100.0 / 400.0).margin(0.005));
+  CHECK(at(1, "eta_trap_50-100").empty());
+
+  // A file in a folder that does not exist is refused before anything is printed.
+  options.csv = scratch / "missing" / "runs.csv";
+  std::ostringstream out_missing, err_missing;
+  CHECK(summarize_runs({scratch / "long"}, options, out_missing, err_missing) == kExitUsage);
+  CHECK_THAT(err_missing.str(), Catch::Contains("expected a file name in an existing folder"));
+  CHECK(out_missing.str().empty());
+  CHECK_FALSE(std::filesystem::exists(options.csv));
+}
+
 TEST_CASE("summarize refuses a directory without a run and levels out of order",
           "[runner][summarize]") {
   TempDirectory scratch;
@@ -142,4 +197,9 @@ TEST_CASE("rodsort summarize takes one sweep directory or run directories, not b
   CHECK(mixed.status == kExitUsage);
   CHECK_THAT(mixed.err, Catch::Contains("give one sweep directory, or one or more run "
                                         "directories"));
+  const auto sweep_csv = rodsort::runner::testing::run_rodsort(
+      {"summarize", (scratch / "sweep").string(), "--csv", (scratch / "x.csv").string()},
+      scratch.path());
+  CHECK(sweep_csv.status == kExitUsage);
+  CHECK_THAT(sweep_csv.err, Catch::Contains("--csv is for run directories"));
 }
