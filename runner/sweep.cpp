@@ -353,7 +353,11 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     plan.cost = estimate_cost(scenario.scenario->model, scenario.scenario->run.steps);
     std::string conflict;
     plan.action = decide(directory / point.name, plan, request.force, conflict);
-    if (!conflict.empty()) conflicts.push_back(conflict);
+    // --point runs one point: what the others hold (one continued beyond the sweep's duration
+    // with `run --resume --duration`, say) does not stop it, nor the other tasks of a job array.
+    const bool chosen = request.point.empty() || request.point == point.name ||
+                        request.point == std::to_string(points.size());
+    if (!conflict.empty() && chosen) conflicts.push_back(conflict);
     points.push_back(std::move(plan));
   }
   if (!conflicts.empty()) {

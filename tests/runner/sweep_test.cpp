@@ -225,6 +225,26 @@ TEST_CASE("sweep --point runs one point of a sweep, by index or by name", "[runn
   const auto missing = point("2");
   CHECK(missing.status == kExitUsage);
   CHECK_THAT(missing.err, Catch::Contains("no such point (give its index, 0 to 1, or its name)"));
+
+  // One point continued beyond the sweep's duration holds another scenario: the whole sweep
+  // refuses to touch it, --point still runs (or skips) the other one, and not the changed one.
+  const auto longer = rodsort::runner::testing::run_rodsort(
+      {"run", "--resume", (sweep / "angle-40").string(), "--duration", "0.49"}, scratch);
+  REQUIRE(longer.status == kExitOk);
+  std::filesystem::remove_all(sweep / "angle-60");
+  const auto whole =
+      rodsort::runner::testing::run_rodsort({"sweep", kTinySweep, "-o", sweep.string()}, scratch);
+  CHECK(whole.status == kExitUsage);
+  CHECK_THAT(whole.err, Catch::Contains("angle-40 holds a run of a different scenario"));
+  CHECK_FALSE(std::filesystem::exists(sweep / "angle-60"));
+  const auto other = point("angle-60");
+  INFO(other.out << other.err);
+  CHECK(other.status == kExitOk);
+  CHECK(read_run_record(sweep / "angle-60")->status == RunStatus::kComplete);
+  const auto changed = point("0");
+  CHECK(changed.status == kExitUsage);
+  CHECK_THAT(changed.err, Catch::Contains("angle-40 holds a run of a different scenario"));
+  CHECK(read_run_record(sweep / "angle-40")->simulated_s == Approx(0.49));
 }
 
 TEST_CASE("sweep --slurm --no-submit writes a job array of the points still to run",
