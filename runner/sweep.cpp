@@ -46,6 +46,7 @@ struct PointPlan {
   std::size_t rods = 0;
   double duration = 0.0;  ///< run.duration [s]
   CostEstimate cost{};    ///< of the whole run
+  bool foreign = false;   ///< holds another scenario; left alone (only --point gets this far)
 };
 
 /// A number for sweep.csv: shortest exact text, "nan" when undefined.
@@ -150,7 +151,8 @@ void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& poi
   out << '\n';
   CostEstimate total{0.0, 0.0};
   for (const PointPlan& point : points) {
-    out << "  " << point.name << ": " << describe_action(point.action);
+    out << "  " << point.name << ": "
+        << (point.foreign ? "holds another scenario, left alone" : describe_action(point.action));
     if (point.action != PointAction::kSkip) {
       out << " (" << point.rods << " rods, " << describe_cost(point.cost) << ')';
       total.low_cpu_s += point.cost.low_cpu_s;
@@ -358,6 +360,7 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     const bool chosen = request.point.empty() || request.point == point.name ||
                         request.point == std::to_string(points.size());
     if (!conflict.empty() && chosen) conflicts.push_back(conflict);
+    plan.foreign = !conflict.empty();
     points.push_back(std::move(plan));
   }
   if (!conflicts.empty()) {

@@ -241,6 +241,11 @@ TEST_CASE("sweep --point runs one point of a sweep, by index or by name", "[runn
   INFO(other.out << other.err);
   CHECK(other.status == kExitOk);
   CHECK(read_run_record(sweep / "angle-60")->status == RunStatus::kComplete);
+  const auto plan = rodsort::runner::testing::run_rodsort(
+      {"sweep", kTinySweep, "-o", sweep.string(), "--point", "1", "--dry-run"}, scratch);
+  CHECK(plan.status == kExitOk);
+  CHECK_THAT(plan.out, Catch::Contains("angle-40: holds another scenario, left alone"));
+  CHECK_THAT(plan.out, Catch::Contains("angle-60: complete, skipped"));
   const auto changed = point("0");
   CHECK(changed.status == kExitUsage);
   CHECK_THAT(changed.err, Catch::Contains("angle-40 holds a run of a different scenario"));
