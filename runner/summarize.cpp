@@ -413,27 +413,22 @@ CsvTable history_table(const std::vector<RunHistory>& histories) {
                                     csv_number(record.duration_s),
                                     history.status,
                                     csv_number(record.cpu_per_simulated_second())};
-    row.resize(table.header.size());
     if (history.has_eta && history.rows > 0) {
       const long failed = failed_attempts(history);
       const bool holds = !history.attempts.empty() && !history.attempts.back().failed();
-      const std::vector<std::string> measures = {
-          csv_number(history.half_to),
-          csv_number(history.eta_stats.mean),
-          csv_number(history.eta_stats.spread),
-          history.has_trap ? csv_number(history.eta_trap_mean) : "",
-          csv_number(history.eta_stats.time_to_90),
-          csv_number(history.eta_max),
-          history.has_trap ? csv_number(history.eta_trap_max) : "",
-          std::to_string(history.attempts.size()),
-          std::to_string(failed),
-          holds ? "1" : "0"};
-      std::copy(measures.begin(), measures.end(), row.begin() + 8);
-      for (const HistoryWindow& window : history.windows) {
-        const std::size_t column = window_columns.at({window.from, window.to});
-        row[column] = csv_number(window.eta);
-        if (history.has_trap) row[column + 1] = csv_number(window.eta_trap);
-      }
+      row.insert(row.end(), {csv_number(history.half_to), csv_number(history.eta_stats.mean),
+                             csv_number(history.eta_stats.spread),
+                             history.has_trap ? csv_number(history.eta_trap_mean) : "",
+                             csv_number(history.eta_stats.time_to_90), csv_number(history.eta_max),
+                             history.has_trap ? csv_number(history.eta_trap_max) : "",
+                             std::to_string(history.attempts.size()), std::to_string(failed),
+                             holds ? "1" : "0"});
+    }
+    row.resize(table.header.size());
+    for (const HistoryWindow& window : history.windows) {  // none without eta(t)
+      const std::size_t column = window_columns.at({window.from, window.to});
+      row[column] = csv_number(window.eta);
+      if (history.has_trap) row[column + 1] = csv_number(window.eta_trap);
     }
     table.rows.push_back(std::move(row));
   }
