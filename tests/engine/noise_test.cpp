@@ -97,8 +97,9 @@ TEST_CASE("rotational diffusion grows with the kick strength", "[physics][noise]
 TEST_CASE("a strong kick's rotational diffusion grows faster than eps^2", "[physics][noise]") {
   // Doubling eps from 0.02 to 0.04 multiplies D_r by 14 over lags of 0.07-0.7 s and by 10.5 at
   // this lag, 0.07 s (16 rods x 40 s, docs/model.md, "Angular noise"; 10.0 here), where a growth as
-  // eps^2 would give 4: a large spin slides against a bounded friction torque and turns the rod by
-  // omega^2 / 2 alpha. The bounds leave 40-60% around 10 for the spread of 6 rods x 10 s.
+  // eps^2 would give 4 (consistent with a large spin sliding against a bounded friction torque,
+  // which turns the rod by omega^2 / 2 alpha). The bounds leave 40-60% around 10 for the spread of
+  // 6 rods x 10 s.
   const double medium =
       measure(testing::rod_species(preset_a_profile(), 0.02), 1e-4, 6, 10.0).rotational_diffusion;
   const double strong =
