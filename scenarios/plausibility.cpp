@@ -81,6 +81,17 @@ void check_step_travel(const ScenarioSpec& spec, const engine::Model& model,
               rounded_mm(kick_spin * arm * dt) + " in one step, more than half its thinnest " +
               "sphere's radius (" + mm(own_allowed) + "); expected kick_eps <= " +
               rounded(own_allowed / (2.0 * plate_speed * arm * dt)) + " /mm at this run.dt");
+    } else if (species.noise.kick_eps * arm > 1.0) {
+      // The spin eps v_rel of a kick moves the end spheres at eps arm v_rel: beyond eps = 1 / arm
+      // a kick gives them more speed than the impact had (RnT at eps = 5 on a rough base went
+      // 1.2 mm into the base within 0.02 s; at 0.25-2 its contacts went 0.06-0.35 mm deep).
+      diagnostics.error(source.kick_eps.where, source.kick_eps.path,
+                        "got " + format_real(species.noise.kick_eps) +
+                            " /mm: one kick moves the rod's end spheres at " +
+                            rounded(species.noise.kick_eps * arm) +
+                            " times the speed of the impact that gave it (eps x their distance " +
+                            "from the centre of mass, " + rounded_mm(arm) +
+                            "); expected kick_eps <= " + rounded(1.0 / arm) + " /mm");
     }
     // White noise turns a rod by sqrt(2 D_r dt) per step (one standard deviation).
     const double turn = std::sqrt(2.0 * species.noise.white_Dr * dt);
