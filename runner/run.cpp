@@ -68,6 +68,8 @@ class RunSession {
   }
 
   int resume() {
+    // A refused resume leaves the run as it was, run.json included: it stays resumable.
+    record_failures_ = false;
     const Checkpoint checkpoint = read_checkpoint(directory_ / kCheckpointFile);
     const std::filesystem::path resolved = directory_ / kResolvedScenarioFile;
     const bool extended = options_.extended_from_fingerprint &&
@@ -94,6 +96,12 @@ class RunSession {
       log("rodsort: continuing with this build (%s) a run written by another (%s)\n",
           build_identity().c_str(), written_by.c_str());
     }
+    simulation_.restore(checkpoint.state);
+    prior_wall_s_ = checkpoint.wall_s;
+    prior_cpu_s_ = checkpoint.cpu_s;
+    sessions_ = checkpoint.sessions + 1;
+    started_at_ = checkpoint.started_at;
+    record_failures_ = true;
     open_files();
     for (AppendFile* file : files()) {
       const std::string name = file->path().filename().string();
@@ -104,11 +112,6 @@ class RunSession {
       }
       file->truncate(recorded->second);
     }
-    simulation_.restore(checkpoint.state);
-    prior_wall_s_ = checkpoint.wall_s;
-    prior_cpu_s_ = checkpoint.cpu_s;
-    sessions_ = checkpoint.sessions + 1;
-    started_at_ = checkpoint.started_at;
     // The metrics observer sees again the frames of its window, as the first file holds them;
     // metrics.csv already has their rows.
     const FrameFile::Visit refill = [this](const engine::Frame& stored, std::uint64_t position) {
@@ -126,8 +129,10 @@ class RunSession {
     return loop();
   }
 
-  /// Records a failure in run.json, if the directory can still be written.
+  /// Records a failure in run.json, if the directory can still be written and the failure did
+  /// not come before a resume had restored the run's state.
   void record_failure(const std::string& message) noexcept {
+    if (!record_failures_) return;
     try {
       write_record(RunStatus::kFailed, message);
     } catch (...) {
@@ -371,9 +376,12 @@ class RunSession {
   std::size_t next_snapshot_ = 0;
   std::int64_t last_checkpoint_step_ = -1;
   double prior_wall_s_ = 0.0, prior_cpu_s_ = 0.0;  ///< spent by earlier sessions
-  double session_wall0_s_ = 0.0, session_cpu0_s_ = 0.0, session_start_sim_s_ = 0.0;
+  /// This process's clocks at its start; a session resets them when it begins to step.
+  double session_wall0_s_ = wall_seconds(), session_cpu0_s_ = process_cpu_seconds();
+  double session_start_sim_s_ = 0.0;
   int sessions_ = 1;
   std::string started_at_;
+  bool record_failures_ = true;
 };
 
 template <typename Body>

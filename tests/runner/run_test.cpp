@@ -295,24 +295,30 @@ TEST_CASE("an edited resolved scenario is refused on resume, not run", "[runner]
   text.replace(at, 14, "duration: 0.28");
   write_file_atomically(resolved, text);
   const std::string rods_before = read_file(crashed / kRodsCsvFile);
+  const std::string record_before = read_file(crashed / kRunRecordFile);
   std::ostringstream err;
   CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err),
                     Catch::Contains("has changed since the run wrote it"));
   CHECK(read_file(crashed / kRodsCsvFile) == rods_before);
+  CHECK(read_file(crashed / kRunRecordFile) == record_before);
 }
 
 TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runner][run][resume]") {
   TempDirectory directory;
   REQUIRE(run_tiny(directory / "whole") == kExitOk);
   const auto crashed = directory / "crashed";
-  const RunOptions crash = crash_at_step_2000();
-  CHECK_THROWS(run_tiny(crashed, crash));
+  RunOptions interrupt = silent();
+  interrupt.after_step = [](std::int64_t step) {
+    if (step == 1234) std::raise(SIGINT);
+  };
+  REQUIRE(run_tiny(crashed, interrupt) == kExitInterrupted);
   Checkpoint checkpoint = read_checkpoint(crashed / kCheckpointFile);
   CHECK(checkpoint.build == build_identity());
   CHECK_THAT(checkpoint.build, Catch::Contains("rodsort ") && Catch::Contains(", executable "));
   checkpoint.build = "rodsort 0.0.1, another build";
   write_checkpoint(crashed / kCheckpointFile, checkpoint);
   const std::string rods_before = read_file(crashed / kRodsCsvFile);
+  const std::string record_before = read_file(crashed / kRunRecordFile);
 
   std::ostringstream err;
   CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err),
@@ -320,7 +326,10 @@ TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runne
                                     "build) than this one (" +
                                     build_identity() + ")") &&
                         Catch::Contains("--any-build"));
+  // Refused, the run keeps its record: still interrupted at its checkpoint, resumable.
   CHECK(read_file(crashed / kRodsCsvFile) == rods_before);
+  CHECK(read_file(crashed / kRunRecordFile) == record_before);
+  CHECK(read_run_record(crashed)->status == RunStatus::kInterrupted);
 
   // Asked to, it continues; with the same physics in this test the files come out the same.
   RunOptions any_build = silent();
@@ -405,4 +414,12 @@ TEST_CASE("a damaged frame read back on resume is named at its line of rods.csv"
   write_file_atomically(crashed / kRodsCsvFile, text);
   std::ostringstream err;
   CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err), Catch::Contains("rods.csv:17:"));
+  // The failure is recorded with the run's progress at its checkpoint, not from zero.
+  const auto record = read_run_record(crashed);
+  REQUIRE(record.has_value());
+  CHECK(record->status == RunStatus::kFailed);
+  CHECK_THAT(record->message, Catch::Contains("rods.csv:17:"));
+  CHECK(record->steps == 1050);
+  CHECK(record->sessions == 2);
+  CHECK(record->wall_s < 600.0);
 }
