@@ -169,13 +169,18 @@ void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& poi
   }
 }
 
+/// Whether --point names this point, by its name or by its index in the sweep.
+bool names_point(const std::string& requested, const std::string& name, std::size_t index) {
+  return requested == name || requested == std::to_string(index);
+}
+
 /// --point: the one point, in this process (exec), as a task of a Slurm array runs it.
 int run_point(const SweepRequest& request, const std::filesystem::path& executable,
               const std::filesystem::path& directory, const std::vector<PointPlan>& points,
               std::ostream& out, std::ostream& err) {
   const PointPlan* chosen = nullptr;
   for (std::size_t p = 0; p < points.size(); ++p) {
-    if (points[p].name == request.point || std::to_string(p) == request.point) chosen = &points[p];
+    if (names_point(request.point, points[p].name, p)) chosen = &points[p];
   }
   if (chosen == nullptr) {
     err << "rodsort: --point " << request.point << ": the sweep has no such point (give its index, "
@@ -357,8 +362,8 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     plan.action = decide(directory / point.name, plan, request.force, conflict);
     // --point runs one point: what the others hold (one continued beyond the sweep's duration
     // with `run --resume --duration`, say) does not stop it, nor the other tasks of a job array.
-    const bool chosen = request.point.empty() || request.point == point.name ||
-                        request.point == std::to_string(points.size());
+    const bool chosen =
+        request.point.empty() || names_point(request.point, point.name, points.size());
     if (!conflict.empty() && chosen) conflicts.push_back(conflict);
     plan.foreign = !conflict.empty();
     points.push_back(std::move(plan));
