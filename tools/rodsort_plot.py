@@ -279,17 +279,22 @@ def orientation_changes(run_dir, tau):
         times, headings, species_of = headings_from_csv(path)
     if len(times) < 2:
         raise PlotError(f"{path}: P(dtheta) needs at least two frames, found {len(times)}")
-    interval = (times[-1] - times[0]) / (len(times) - 1)
+    # Frames are regular but for the last of a run whose duration is not a whole number of
+    # intervals (docs/cli.md): pairs that reach it span less than the lag and are left out.
+    interval = times[1] - times[0]
     lag = max(1, round(tau / interval))
     if lag >= len(times):
         raise PlotError(f"{path}: the run holds {len(times)} frames, {interval:.3g} s apart: "
                         f"too few for tau = {tau} s")
+    span = lag * interval
+    pairs = [k for k in range(len(times) - lag)
+             if abs(times[k + lag] - times[k] - span) <= 1e-6 * span]
     changes = {}
     for rod, series in headings.items():
         per_species = changes.setdefault(species_of[rod], [])
         per_species.extend(math.degrees(wrap_angle(series[k + lag] - series[k]))
-                           for k in range(len(series) - lag))
-    return changes, lag, lag * interval
+                           for k in pairs if k + lag < len(series))
+    return changes, lag, span
 
 
 def critical_angle(points):

@@ -1,6 +1,7 @@
 #include "render/plot_script.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -110,6 +111,33 @@ TEST_CASE("The plot script draws a run up to --until", "[render][plot]") {
       render::run_plot_script({run.path().string(), "--until", "0"});
   CHECK(refused.exit_status == 2);
   CHECK_THAT(refused.output, Catch::Contains("--until: must be positive"));
+}
+
+TEST_CASE("P(dtheta) leaves out the pairs that reach a run's shorter last interval",
+          "[render][plot]") {
+  require_plot_python();
+  const TempDirectory run;
+  // Frames every 0.07 s and a last one at 0.25 s, where a run of 0.25 s ends: the rod turns by
+  // 2 degrees per frame, then by 50 degrees in the last 0.04 s.
+  std::ofstream rods(run / "rods.csv");
+  rods << "t,rod,species,ux,uy\n";
+  const double times[] = {0.0, 0.07, 0.14, 0.21, 0.25};
+  const double degrees[] = {0.0, 2.0, 4.0, 6.0, 56.0};
+  for (int k = 0; k < 5; ++k) {
+    const double angle = degrees[k] * M_PI / 180.0;
+    rods << times[k] << ",0,A," << std::cos(angle) << ',' << std::sin(angle) << '\n';
+  }
+  rods.close();
+  std::ofstream(run / "metrics.csv") << "t,n_rods\n";
+  const render::ProgramOutput plotted =
+      render::run_plot_script({run.path().string(), "--what", "dtheta", "--format", "svg"});
+  INFO(plotted.output);
+  REQUIRE(plotted.exit_status == 0);
+  const std::string svg = read_text(run / "plots" / "dtheta.svg");
+  // The lag is the frames' interval, not their mean spacing (0.0625 s), and the axis holds the
+  // 2-degree turns (+-10) without the 50-degree one of the short last interval (+-60).
+  CHECK_THAT(svg, Catch::Contains("over 0.07 s") && Catch::Contains(">10.0</text>"));
+  CHECK_THAT(svg, !Catch::Contains(">60</text>"));
 }
 
 TEST_CASE("The plot script names a missing column", "[render][plot]") {
