@@ -8,6 +8,7 @@
 
 #include "engine/fingerprint.hpp"
 #include "runner/atomic_file.hpp"
+#include "runner/version.hpp"
 #include "scenarios/number_text.hpp"
 
 namespace rodsort::runner {
@@ -157,6 +158,22 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   } catch (const std::runtime_error& error) {
     throw std::runtime_error("checkpoint " + path.string() + ": " + error.what());
   }
+}
+
+bool written_by_another_build(const Checkpoint& checkpoint, const std::filesystem::path& directory,
+                              bool any_build) {
+  if (checkpoint.build == build_identity()) return false;
+  if (!any_build) {
+    const std::string written_by =
+        checkpoint.build.empty() ? "a build that did not record itself" : checkpoint.build;
+    throw std::runtime_error("the checkpoint in " + directory.string() +
+                             " was written by another build of rodsort (" + written_by +
+                             ") than this one (" + build_identity() +
+                             "); a run continues bit for bit only with the build that started "
+                             "it: resume it with that build, or pass --any-build to continue it "
+                             "with this one");
+  }
+  return true;
 }
 
 }  // namespace rodsort::runner

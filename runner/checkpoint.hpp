@@ -45,4 +45,10 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& check
 /// written (its checksum), or not a checkpoint.
 Checkpoint read_checkpoint(const std::filesystem::path& path);
 
+/// Whether `checkpoint` (of the run in `directory`) was written by another build than this one.
+/// Throws std::runtime_error naming both builds when it was and `any_build` is false: a run
+/// continues bit for bit only with the build that started it.
+bool written_by_another_build(const Checkpoint& checkpoint, const std::filesystem::path& directory,
+                              bool any_build);
+
 }  // namespace rodsort::runner

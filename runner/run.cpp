@@ -82,19 +82,10 @@ class RunSession {
           "); a run resumes only with the scenario it started with: restore the file, or start "
           "a new run from the edited scenario");
     }
-    if (checkpoint.build != build_identity()) {
-      const std::string written_by =
-          checkpoint.build.empty() ? "a build that did not record itself" : checkpoint.build;
-      if (!options_.any_build) {
-        throw std::runtime_error(
-            "the checkpoint in " + directory_.string() +
-            " was written by another build of rodsort (" + written_by + ") than this one (" +
-            build_identity() +
-            "); a run continues bit for bit only with the build that started it: resume it with "
-            "that build, or pass --any-build to continue it with this one");
-      }
+    if (written_by_another_build(checkpoint, directory_, options_.any_build)) {
       log("rodsort: continuing with this build (%s) a run written by another (%s)\n",
-          build_identity().c_str(), written_by.c_str());
+          build_identity().c_str(),
+          checkpoint.build.empty() ? "one that did not record itself" : checkpoint.build.c_str());
     }
     simulation_.restore(checkpoint.state);
     prior_wall_s_ = checkpoint.wall_s;

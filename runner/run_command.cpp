@@ -143,6 +143,8 @@ int resume_run_directory(const std::filesystem::path& directory, const RunOption
         << " has changed since the run wrote it; restore it before continuing the run\n";
     return kExitFailure;
   }
+  // Refused here, before the scenario is rewritten, so that a refused run is left as it was.
+  written_by_another_build(checkpoint, directory, options.any_build);
   const RunPlan plan = make_run_plan(*longer.scenario);
   write_file_atomically(resolved, plan.resolved_yaml);
   RunOptions extended = options;

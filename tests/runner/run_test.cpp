@@ -330,6 +330,12 @@ TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runne
   CHECK(read_file(crashed / kRodsCsvFile) == rods_before);
   CHECK(read_file(crashed / kRunRecordFile) == record_before);
   CHECK(read_run_record(crashed)->status == RunStatus::kInterrupted);
+  // Continued to a longer duration, it is refused before its scenario is rewritten.
+  const std::string resolved_before = read_file(crashed / kResolvedScenarioFile);
+  CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err, 0.7),
+                    Catch::Contains("written by another build of rodsort"));
+  CHECK(read_file(crashed / kResolvedScenarioFile) == resolved_before);
+  CHECK(read_file(crashed / kRunRecordFile) == record_before);
 
   // Asked to, it continues; with the same physics in this test the files come out the same.
   RunOptions any_build = silent();
