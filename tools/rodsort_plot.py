@@ -58,6 +58,12 @@ def colour(index):
     return SPECIES_COLOURS[index % len(SPECIES_COLOURS)]
 
 
+def run_line_style(index):
+    """Solid for the first runs of a plot, then dashed, then dotted: the colours repeat after
+    len(SPECIES_COLOURS) runs, and the style tells those runs apart."""
+    return ("-", "--", ":")[min(index // len(SPECIES_COLOURS), 2)]
+
+
 # ---------------------------------------------------------------------------------------------
 # Reading
 
@@ -490,7 +496,8 @@ def plot_eta(plt, runs, out_dir, formats, written, until):
         eta = table.numbers("eta", "eta(t)")
         label = run_label(run_dir, runs) if several else "all rods"
         line_colour = colour(index) if several else "black"
-        axes.plot(t, eta, color=line_colour, linewidth=1.2, label=label)
+        axes.plot(t, eta, color=line_colour, linewidth=1.2, linestyle=run_line_style(index),
+                  label=label)
         if several:
             continue
         if table.has("eta_trap"):
@@ -545,7 +552,7 @@ DTHETA_BINS = 120
 
 
 def plot_dtheta(plt, runs, out_dir, formats, written, tau):
-    lines = []  # (label, colour, values)
+    lines = []  # (label, colour, line style, values)
     spans = set()
     several = len(runs) > 1
     for index, run_dir in enumerate(runs):
@@ -556,14 +563,15 @@ def plot_dtheta(plt, runs, out_dir, formats, written, tau):
             label = run_label(run_dir, runs) if several else name
             if several and len(changes) > 1:
                 label = f"{run_label(run_dir, runs)}: {name}"
-            lines.append((label, colour(index if several else s), changes[name]))
-    largest = max((abs(v) for _, _, values in lines for v in values), default=0.0)
+            lines.append((label, colour(index if several else s),
+                          run_line_style(index) if several else "-", changes[name]))
+    largest = max((abs(v) for _, _, _, values in lines for v in values), default=0.0)
     half_width = next((r for r in DTHETA_RANGES if largest <= r), 180)
     edges = [-half_width + 2.0 * half_width * k / DTHETA_BINS for k in range(DTHETA_BINS + 1)]
     figure, axes = new_figure(plt)
-    for label, line_colour, values in lines:
+    for label, line_colour, style, values in lines:
         axes.hist(values, bins=edges, density=True, histtype="step", linewidth=1.2,
-                  color=line_colour, label=label)
+                  color=line_colour, linestyle=style, label=label)
     span_text = ", ".join(f"{span:g}" for span in sorted(spans))
     axes.set_yscale("log")
     axes.set_xlim(-half_width, half_width)

@@ -140,6 +140,38 @@ TEST_CASE("P(dtheta) leaves out the pairs that reach a run's shorter last interv
   CHECK_THAT(svg, !Catch::Contains(">60</text>"));
 }
 
+TEST_CASE("Runs beyond the palette's colours are drawn dashed", "[render][plot]") {
+  require_plot_python();
+  const TestScene test;
+  const TempDirectory scratch;
+  // eta(t) of n runs as SVG: how many of its paths are dashed.
+  const auto dashed_lines = [&](int runs) {
+    std::vector<std::string> arguments;
+    for (int r = 0; r < runs; ++r) {
+      const auto run = scratch / ("n" + std::to_string(runs)) / ("run" + std::to_string(r));
+      std::filesystem::create_directories(run);
+      write_run_with_metrics(run, test, 6);
+      arguments.push_back(run.string());
+    }
+    for (const char* extra : {"--what", "eta", "--format", "svg", "-o"}) arguments.push_back(extra);
+    arguments.push_back((scratch / ("plots" + std::to_string(runs))).string());
+    const render::ProgramOutput plotted = render::run_plot_script(arguments);
+    INFO(plotted.output);
+    REQUIRE(plotted.exit_status == 0);
+    const std::string svg = read_text(scratch / ("plots" + std::to_string(runs)) / "eta.svg");
+    std::size_t count = 0;
+    for (auto at = svg.find("stroke-dasharray"); at != std::string::npos;
+         at = svg.find("stroke-dasharray", at + 1)) {
+      ++count;
+    }
+    return count;
+  };
+  // Seven colours: the eighth run repeats the first one's colour, and its line (with its legend
+  // entry) is dashed.
+  CHECK(dashed_lines(7) == 0);
+  CHECK(dashed_lines(8) == 2);
+}
+
 TEST_CASE("The plot script names a missing column", "[render][plot]") {
   require_plot_python();
   const TempDirectory run;
