@@ -67,22 +67,10 @@ class RunSession {
     return loop();
   }
 
-  int resume() {
-    // A refused resume leaves the run as it was, run.json included: it stays resumable.
+  int resume(const Checkpoint& checkpoint) {
+    // A failure before the state is restored leaves the run as it was, run.json included.
     record_failures_ = false;
-    const Checkpoint checkpoint = read_checkpoint(directory_ / kCheckpointFile);
-    const std::filesystem::path resolved = directory_ / kResolvedScenarioFile;
-    const bool extended = options_.extended_from_fingerprint &&
-                          *options_.extended_from_fingerprint == checkpoint.scenario_fingerprint;
-    if (!extended && engine::fingerprint(read_file(resolved)) != checkpoint.scenario_fingerprint) {
-      throw std::runtime_error(
-          resolved.string() +
-          " has changed since the run wrote it (its fingerprint differs from the one in " +
-          kCheckpointFile +
-          "); a run resumes only with the scenario it started with: restore the file, or start "
-          "a new run from the edited scenario");
-    }
-    if (written_by_another_build(checkpoint, directory_, options_.any_build)) {
+    if (checkpoint.build != build_identity()) {
       log("rodsort: continuing with this build (%s) a run written by another (%s)\n",
           build_identity().c_str(),
           checkpoint.build.empty() ? "one that did not record itself" : checkpoint.build.c_str());
@@ -395,9 +383,9 @@ int start_run(const RunPlan& plan, const std::filesystem::path& directory,
 }
 
 int continue_run(const RunPlan& plan, const std::filesystem::path& directory,
-                 const RunOptions& options) {
+                 const Checkpoint& checkpoint, const RunOptions& options) {
   RunSession session(plan, directory, options);
-  return guarded(session, [&] { return session.resume(); });
+  return guarded(session, [&] { return session.resume(checkpoint); });
 }
 
 }  // namespace rodsort::runner

@@ -27,11 +27,12 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
-#include <optional>
 
 #include "runner/run_plan.hpp"
 
 namespace rodsort::runner {
+
+struct Checkpoint;
 
 struct RunOptions {
   /// Where progress and messages go (nullptr: nowhere). A terminal gets a live line.
@@ -43,10 +44,6 @@ struct RunOptions {
   /// Resume a checkpoint written by another build of rodsort (runner::build_identity). The run then
   /// goes on with the same physics but not bit for bit as it would have with its own build.
   bool any_build = false;
-  /// When set, the checkpoint may carry this scenario fingerprint instead of that of the run's
-  /// scenario.resolved.yaml: the caller rewrote the file to extend the run
-  /// (resume_run_directory with a duration) after checking the checkpoint against the old one.
-  std::optional<std::uint64_t> extended_from_fingerprint;
 };
 
 /// Runs `plan` from the start into `directory`, which must not hold a run (the caller checks and
@@ -55,9 +52,10 @@ struct RunOptions {
 int start_run(const RunPlan& plan, const std::filesystem::path& directory,
               const RunOptions& options = {});
 
-/// Continues the run in `directory` from its checkpoint. `plan` must be the one compiled from the
-/// directory's scenario.resolved.yaml.
+/// Continues the run in `directory` from `checkpoint`, read from it and checked by the caller
+/// against the scenario the run started with and this build (resume_run_directory).
+/// `plan` must be the one compiled from the directory's scenario.resolved.yaml.
 int continue_run(const RunPlan& plan, const std::filesystem::path& directory,
-                 const RunOptions& options = {});
+                 const Checkpoint& checkpoint, const RunOptions& options = {});
 
 }  // namespace rodsort::runner

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <ostream>
+#include <stdexcept>
+#include <string>
 
 #include "engine/fingerprint.hpp"
 #include "runner/atomic_file.hpp"
@@ -119,7 +121,20 @@ int resume_run_directory(const std::filesystem::path& directory, const RunOption
     err << "rodsort: cannot resume: " << resolved.string() << " no longer loads\n";
     return kExitFailure;
   }
-  if (!duration) return continue_run(make_run_plan(*loaded.scenario), directory, options);
+  // Checked once, here, before anything in the directory is written: a refused resume leaves the
+  // run as it was and resumable by the build that started it.
+  const Checkpoint checkpoint = read_checkpoint(directory / kCheckpointFile);
+  if (engine::fingerprint(read_file(resolved)) != checkpoint.scenario_fingerprint) {
+    throw std::runtime_error(
+        resolved.string() + " has changed since the run wrote it (its fingerprint differs from " +
+        "the one in " + kCheckpointFile +
+        "); a run resumes only with the scenario it started with: restore the file, or start a "
+        "new run from the edited scenario");
+  }
+  written_by_another_build(checkpoint, directory, options.any_build);
+  if (!duration) {
+    return continue_run(make_run_plan(*loaded.scenario), directory, checkpoint, options);
+  }
 
   // Extending: the same scenario with another run.duration, checked as a new one would be.
   char value[64];
@@ -136,20 +151,9 @@ int resume_run_directory(const std::filesystem::path& directory, const RunOption
         << " s, beyond --duration " << *duration << " s; nothing was changed\n";
     return kExitUsage;
   }
-  const std::string old_text = read_file(resolved);
-  const Checkpoint checkpoint = read_checkpoint(directory / kCheckpointFile);
-  if (engine::fingerprint(old_text) != checkpoint.scenario_fingerprint) {
-    err << "rodsort: " << resolved.string()
-        << " has changed since the run wrote it; restore it before continuing the run\n";
-    return kExitFailure;
-  }
-  // Refused here, before the scenario is rewritten, so that a refused run is left as it was.
-  written_by_another_build(checkpoint, directory, options.any_build);
   const RunPlan plan = make_run_plan(*longer.scenario);
   write_file_atomically(resolved, plan.resolved_yaml);
-  RunOptions extended = options;
-  extended.extended_from_fingerprint = checkpoint.scenario_fingerprint;
-  return continue_run(plan, directory, extended);
+  return continue_run(plan, directory, checkpoint, options);
 }
 
 int validate_scenario_file(const std::filesystem::path& scenario,

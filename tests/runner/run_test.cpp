@@ -301,6 +301,11 @@ TEST_CASE("an edited resolved scenario is refused on resume, not run", "[runner]
                     Catch::Contains("has changed since the run wrote it"));
   CHECK(read_file(crashed / kRodsCsvFile) == rods_before);
   CHECK(read_file(crashed / kRunRecordFile) == record_before);
+  // Continued to a longer duration, it is refused before the edited file is rewritten.
+  CHECK_THROWS_WITH(resume_run_directory(crashed, silent(), err, 0.7),
+                    Catch::Contains("has changed since the run wrote it"));
+  CHECK(read_file(resolved) == text);
+  CHECK(read_file(crashed / kRunRecordFile) == record_before);
 }
 
 TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runner][run][resume]") {
