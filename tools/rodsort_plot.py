@@ -274,27 +274,42 @@ def headings_from_h5md(path):
     return times[:frames], headings, species_of
 
 
+def rods_file(run_dir):
+    """The file of a run's frames: rods.csv, or else rods.h5 where only that is there."""
+    path = os.path.join(run_dir, "rods.csv")
+    h5 = os.path.join(run_dir, "rods.h5")
+    return h5 if not os.path.isfile(path) and os.path.isfile(h5) else path
+
+
+def run_headings(run_dir):
+    """Frame times, each rod's heading in every frame, and each rod's species, of a run."""
+    path = rods_file(run_dir)
+    return headings_from_h5md(path) if path.endswith(".h5") else headings_from_csv(path)
+
+
+def regular_pairs(times, lag):
+    """The frames k whose pair (k, k + lag) spans lag whole intervals. Frames are regular but for
+    the last of a run whose duration is not a whole number of intervals (docs/cli.md): pairs that
+    reach it span less and are left out."""
+    span = lag * (times[1] - times[0])
+    return [k for k in range(len(times) - lag)
+            if abs(times[k + lag] - times[k] - span) <= 1e-6 * span]
+
+
 def orientation_changes(run_dir, tau):
     """Per species: the changes of in-plane orientation [degrees] of every rod over tau, and the
     lag in frames and the real time it spans."""
-    path = os.path.join(run_dir, "rods.csv")
-    if not os.path.isfile(path) and os.path.isfile(os.path.join(run_dir, "rods.h5")):
-        path = os.path.join(run_dir, "rods.h5")
-        times, headings, species_of = headings_from_h5md(path)
-    else:
-        times, headings, species_of = headings_from_csv(path)
+    path = rods_file(run_dir)
+    times, headings, species_of = run_headings(run_dir)
     if len(times) < 2:
         raise PlotError(f"{path}: P(dtheta) needs at least two frames, found {len(times)}")
-    # Frames are regular but for the last of a run whose duration is not a whole number of
-    # intervals (docs/cli.md): pairs that reach it span less than the lag and are left out.
     interval = times[1] - times[0]
     lag = max(1, round(tau / interval))
     if lag >= len(times):
         raise PlotError(f"{path}: the run holds {len(times)} frames, {interval:.3g} s apart: "
                         f"too few for tau = {tau} s")
     span = lag * interval
-    pairs = [k for k in range(len(times) - lag)
-             if abs(times[k + lag] - times[k] - span) <= 1e-6 * span]
+    pairs = regular_pairs(times, lag)
     changes = {}
     for rod, series in headings.items():
         per_species = changes.setdefault(species_of[rod], [])
