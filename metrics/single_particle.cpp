@@ -17,11 +17,22 @@ Track track_of(const std::vector<engine::Frame>& frames, int rod) {
     const double phi = heading(r);
     track.time.push_back(frame.time);
     track.position.push_back(r.unwrapped);
+    track.tilt.push_back(r.axis.z());
     track.heading.push_back(track.heading.empty()
                                 ? phi
                                 : track.heading.back() + wrap_angle(phi - track.heading.back()));
   }
   return track;
+}
+
+double thin_end_down_fraction(const std::vector<Track>& tracks) {
+  long down = 0, samples = 0;
+  for (const Track& track : tracks) {
+    for (const double tilt : track.tilt) down += tilt < 0.0 ? 1 : 0;
+    samples += static_cast<long>(track.tilt.size());
+  }
+  return samples > 0 ? static_cast<double>(down) / static_cast<double>(samples)
+                     : std::numeric_limits<double>::quiet_NaN();
 }
 
 std::vector<double> axial_velocities(const Track& track, int lag, int stride) {

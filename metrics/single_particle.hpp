@@ -16,11 +16,17 @@ struct Track {
   std::vector<double> time;               ///< [s], equally spaced
   std::vector<Eigen::Vector2d> position;  ///< unwrapped centre of mass [mm]
   std::vector<double> heading;            ///< unwrapped in-plane thick-to-thin direction [rad]
+  std::vector<double> tilt;  ///< vertical component of the thick-to-thin axis (< 0: thin end down)
 };
 
 /// Rod `rod` of every frame as a track. Frames must be close enough that the rod turns by less
 /// than half a turn between two of them.
 Track track_of(const std::vector<engine::Frame>& frames, int rod);
+
+/// The fraction of all samples of the tracks in which the thin end is lower than the thick one
+/// (tilt < 0): the tilt of the gait that moves a tapered rod toward its thin end. NaN for no
+/// samples.
+double thin_end_down_fraction(const std::vector<Track>& tracks);
 
 /// Axial velocity over windows of `lag` samples [mm/s]: the displacement from sample i to i + lag
 /// projected on the mean in-plane axis of the two samples, over the time between them; positive

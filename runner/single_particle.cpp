@@ -190,6 +190,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   }
   const metrics::TwoPeaks peaks = metrics::two_peaks(bin_centre, density);
   const double measured = request.duration * request.rods;
+  const double thin_end_down = metrics::thin_end_down_fraction(tracks);
 
   char line[512];
   out << "species " << species_name << ": " << request.rods << " rods x " << request.duration
@@ -210,6 +211,8 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                 "%.3g s (%ld runs, %ld tumbles)\n",
                 runs.running_fraction, threshold, runs.mean_run, runs.mean_tumble, runs.runs,
                 runs.tumbles);
+  out << line;
+  std::snprintf(line, sizeof line, "  tilt      thin end down in %.3f of frames\n", thin_end_down);
   out << line;
   std::snprintf(line, sizeof line,
                 "  P(V_x)    %s: main peak %.3g mm/s; second peak %.3g mm/s, %.2f as high, "
@@ -249,6 +252,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                       "second_peak_mm_s",
                       "second_peak_height",
                       "valley",
+                      "thin_end_down_fraction",
                       "kicks_per_s",
                       "cpu_s"};
     summary.rows.push_back({species_name,
@@ -274,6 +278,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                             number(peaks.second),
                             number(peaks.second_height),
                             number(peaks.valley),
+                            number(thin_end_down),
                             number(static_cast<double>(kicks) / measured),
                             number(cpu)});
     write_file_atomically(request.output / "summary.csv", csv_text(summary));

@@ -56,6 +56,37 @@ TEST_CASE("track_of unwraps the heading across +-pi and keeps unwrapped position
   CHECK_THAT(track.position.back().x(), WithinAbs(400.0, 1e-12));
 }
 
+TEST_CASE("the tilt: the fraction of frames with the thin end down, over every track",
+          "[metrics][single]") {
+  // Frames whose axis tilts by the given vertical components (thin end down when negative).
+  const auto tilted = [](std::vector<double> tilts) {
+    std::vector<engine::Frame> frames;
+    for (std::size_t i = 0; i < tilts.size(); ++i) {
+      engine::Frame frame;
+      frame.time = 0.01 * static_cast<double>(i);
+      engine::RodFrame rod;
+      rod.velocity.setZero();
+      rod.angular_velocity.setZero();
+      const double level = std::sqrt(1.0 - tilts[i] * tilts[i]);
+      rod.axis = Eigen::Vector3d(level, 0.0, tilts[i]);
+      rod.unwrapped.setZero();
+      rod.position.setZero();
+      frame.rods.push_back(rod);
+      frames.push_back(frame);
+    }
+    return metrics::track_of(frames, 0);
+  };
+  const metrics::Track first = tilted({-0.04, -0.03, 0.02, -0.05});
+  REQUIRE(first.tilt.size() == 4);
+  CHECK_THAT(first.tilt[2], WithinAbs(0.02, 1e-15));
+  CHECK_THAT(first.heading[2], WithinAbs(0.0, 1e-15));  // the tilt leaves the heading alone
+  CHECK_THAT(metrics::thin_end_down_fraction({first}), WithinAbs(0.75, 1e-15));
+  // Pooled over frames, not averaged over tracks: 3 + 0 of 4 + 2 frames.
+  const metrics::Track second = tilted({0.01, 0.0});
+  CHECK_THAT(metrics::thin_end_down_fraction({first, second}), WithinAbs(0.5, 1e-15));
+  CHECK(std::isnan(metrics::thin_end_down_fraction({})));
+}
+
 TEST_CASE("axial velocity is the speed toward the thin end, negative backward",
           "[metrics][single]") {
   const metrics::Track forward = steady_track(3.6, 0.5, 0.01, 200);

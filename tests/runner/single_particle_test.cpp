@@ -33,6 +33,10 @@ TEST_CASE("rodsort single writes the study of one species", "[runner][single]") 
   const double v0 = summary.numbers(*summary.column("v0_mm_s"))[0];
   // Rod A of the default model moves toward its thin end (docs/model.md).
   CHECK(v0 > 5.0);
+  // ... with its thin end down (0.96 of the frames of 16 rods x 40 s).
+  REQUIRE(summary.column("thin_end_down_fraction"));
+  CHECK(summary.numbers(*summary.column("thin_end_down_fraction"))[0] > 0.8);
+  CHECK_THAT(result.out, Catch::Contains("thin end down in"));
   CHECK(summary.numbers(*summary.column("rods"))[0] == 3.0);
   CHECK(read_csv(out / "per_rod.csv").rows.size() == 3);
   const CsvTable lags = read_csv(out / "lags.csv");
