@@ -478,8 +478,11 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   OutputSettings& output = scenario.output;
   output.frame_interval = spec.frame_interval.value;
   output.frame_steps = to_steps(spec.frame_interval, dt, diagnostics);
-  if (spec.h5md_precision.given && spec.rods_format.value == "csv") {
-    // A warning only: a sweep may compare the formats.
+  if (spec.h5md_precision.given && spec.h5md_precision.value != "single" &&
+      spec.rods_format.value == "csv") {
+    // A warning only: a sweep may compare the formats. Only a value other than the default is
+    // worth one: every resolved scenario (a sweep's points, a run's scenario.resolved.yaml)
+    // names the precision, and a run writing rods.csv reads it back.
     diagnostics.warning(spec.h5md_precision.where, spec.h5md_precision.path,
                         "ignored: it is only for rods.h5, and output.rods_format is csv");
   }

@@ -415,4 +415,11 @@ TEST_CASE("output.rods_format chooses rods.csv, rods.h5 or both", "[scenario][ou
   REQUIRE(ignored.ok());
   CHECK_THAT(format_diagnostics(ignored.diagnostics),
              Catch::Contains("output.h5md_precision: ignored: it is only for rods.h5"));
+  // A resolved scenario names the default precision whatever the format; read back for a run
+  // that writes rods.csv (every sweep point, every resume) it warns of nothing.
+  const Scenario csv = load_ok("trap: {angle: 100}\n");
+  REQUIRE_THAT(resolved_yaml(csv), Catch::Contains("h5md_precision: single\n"));
+  const LoadResult reread = load_scenario_text(resolved_yaml(csv), "scenario.resolved.yaml");
+  REQUIRE(reread.ok());
+  CHECK(reread.diagnostics.empty());
 }
