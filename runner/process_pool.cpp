@@ -97,8 +97,4 @@ std::vector<JobResult> run_jobs(const std::vector<Job>& jobs, int parallel,
   return results;
 }
 
-std::filesystem::path current_executable() {
-  return std::filesystem::read_symlink("/proc/self/exe");
-}
-
 }  // namespace rodsort::runner

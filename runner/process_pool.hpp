@@ -35,7 +35,4 @@ struct PoolCallbacks {
 std::vector<JobResult> run_jobs(const std::vector<Job>& jobs, int parallel,
                                 const PoolCallbacks& callbacks = {});
 
-/// The path of the running executable (/proc/self/exe), for running rodsort on itself.
-std::filesystem::path current_executable();
-
 }  // namespace rodsort::runner

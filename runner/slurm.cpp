@@ -61,8 +61,9 @@ std::string sbatch_script(const SlurmArray& array, const SlurmOptions& options) 
   for (const std::string& line : options.extra_lines) script << "#SBATCH " << line << '\n';
   // exec: the run is the batch shell itself, so Slurm's SIGTERM (from --signal, scancel or the
   // time limit) reaches it exactly once and it writes its checkpoint before it stops.
-  script << "exec " << shell_quote(array.executable.string()) << " sweep "
-         << shell_quote(array.sweep_file.string()) << " -o "
+  script << "exec";
+  for (const std::string& word : array.program) script << ' ' << shell_quote(word);
+  script << " sweep " << shell_quote(array.sweep_file.string()) << " -o "
          << shell_quote(array.directory.string()) << " --point \"$SLURM_ARRAY_TASK_ID\"";
   for (const std::string& option : array.set_options) script << " --set " << shell_quote(option);
   if (array.any_build) script << " --any-build";

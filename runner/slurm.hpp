@@ -28,7 +28,7 @@ struct SlurmOptions {
 /// What the array script needs to know of the sweep.
 struct SlurmArray {
   std::string sweep_name;
-  std::filesystem::path executable;  ///< absolute
+  std::vector<std::string> program;  ///< the command that starts rodsort, absolute paths
   std::filesystem::path sweep_file;  ///< absolute
   std::filesystem::path directory;   ///< the sweep directory, absolute
   std::vector<std::size_t> points;   ///< indices of the points to run, ascending

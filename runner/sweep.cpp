@@ -23,6 +23,7 @@
 #include "runner/run_lock.hpp"
 #include "runner/run_record.hpp"
 #include "runner/run_summary.hpp"
+#include "runner/self_program.hpp"
 #include "runner/slurm.hpp"
 #include "runner/usable_cpus.hpp"
 #include "scenarios/number_text.hpp"
@@ -94,14 +95,14 @@ PointAction decide(const std::filesystem::path& run_directory, const PointPlan& 
   return PointAction::kRestart;
 }
 
-std::vector<std::string> point_command(const std::filesystem::path& executable,
+std::vector<std::string> point_command(const std::vector<std::string>& program,
                                        const std::filesystem::path& scenario_file,
                                        const std::filesystem::path& run_directory,
                                        const PointPlan& point, bool any_build) {
-  const std::string program = executable.string();
+  std::vector<std::string> argv = program;
   const PointAction action = point.action;
   if (action == PointAction::kResume || action == PointAction::kExtend) {
-    std::vector<std::string> argv = {program, "run", "--resume", run_directory.string()};
+    argv.insert(argv.end(), {"run", "--resume", run_directory.string()});
     if (action == PointAction::kExtend) {
       argv.push_back("--duration");
       argv.push_back(scenarios::format_real(point.duration));
@@ -109,8 +110,7 @@ std::vector<std::string> point_command(const std::filesystem::path& executable,
     if (any_build) argv.push_back("--any-build");
     return argv;
   }
-  std::vector<std::string> argv = {program, "run", scenario_file.string(), "-o",
-                                   run_directory.string()};
+  argv.insert(argv.end(), {"run", scenario_file.string(), "-o", run_directory.string()});
   if (action == PointAction::kRestart) argv.push_back("--force");
   return argv;
 }
@@ -175,7 +175,7 @@ bool names_point(const std::string& requested, const std::string& name, std::siz
 }
 
 /// --point: the one point, in this process (exec), as a task of a Slurm array runs it.
-int run_point(const SweepRequest& request, const std::filesystem::path& executable,
+int run_point(const SweepRequest& request, const std::vector<std::string>& program,
               const std::filesystem::path& directory, const std::vector<PointPlan>& points,
               std::ostream& out, std::ostream& err) {
   const PointPlan* chosen = nullptr;
@@ -197,8 +197,8 @@ int run_point(const SweepRequest& request, const std::filesystem::path& executab
   if (chosen->action == PointAction::kStart || chosen->action == PointAction::kRestart) {
     write_file_atomically(scenario_file, chosen->resolved_yaml);
   }
-  const std::vector<std::string> argv = point_command(
-      executable, scenario_file, directory / chosen->name, *chosen, request.any_build);
+  const std::vector<std::string> argv =
+      point_command(program, scenario_file, directory / chosen->name, *chosen, request.any_build);
   out << "rodsort: point " << chosen->name << ' ' << describe_action(chosen->action) << ":";
   for (const std::string& word : argv) out << ' ' << shell_quote(word);
   out << std::endl;
@@ -212,11 +212,11 @@ int run_point(const SweepRequest& request, const std::filesystem::path& executab
 
 /// --slurm: the points to run as one job array.
 int submit_array(const SweepRequest& request, const scenarios::Sweep& sweep,
-                 const std::filesystem::path& executable, const std::filesystem::path& directory,
+                 const std::vector<std::string>& program, const std::filesystem::path& directory,
                  const std::vector<PointPlan>& points, std::ostream& out, std::ostream& err) {
   SlurmArray array;
   array.sweep_name = sweep.name;
-  array.executable = std::filesystem::absolute(executable);
+  array.program = program;
   array.sweep_file = std::filesystem::absolute(request.sweep_file);
   array.directory = std::filesystem::absolute(directory);
   array.set_options = request.set_options;
@@ -379,10 +379,13 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     print_plan(sweep, points, directory, out);
     return kExitOk;
   }
-  const std::filesystem::path executable =
-      request.executable.empty() ? current_executable() : request.executable;
+  // Absolute, for the Slurm array's script, which may start in another directory.
+  const std::vector<std::string> program =
+      request.executable.empty()
+          ? program_command()
+          : std::vector<std::string>{std::filesystem::absolute(request.executable).string()};
   if (!request.point.empty()) {
-    return run_point(request, executable, directory, points, out, err);
+    return run_point(request, program, directory, points, out, err);
   }
 
   std::filesystem::create_directories(directory / kScenariosDirectory);
@@ -395,7 +398,7 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
   }
   write_sweep_csv(directory, sweep.keys, names, values);
   if (request.slurm.enabled) {
-    return submit_array(request, sweep, executable, directory, points, out, err);
+    return submit_array(request, sweep, program, directory, points, out, err);
   }
 
   std::vector<Job> jobs;
@@ -413,7 +416,7 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
       write_file_atomically(scenario_file, point.resolved_yaml);
     }
     jobs.push_back(
-        {point_command(executable, scenario_file, directory / point.name, point, request.any_build),
+        {point_command(program, scenario_file, directory / point.name, point, request.any_build),
          directory / kLogsDirectory / (point.name + ".log")});
     job_point.push_back(p);
   }

@@ -37,7 +37,7 @@ struct SweepRequest {
   /// of a Slurm array does. Complete: nothing to do.
   std::string point;
   SlurmOptions slurm;
-  /// The rodsort program the points run with; empty: this process's own executable.
+  /// The rodsort program the points run with; empty: this program (program_command()).
   std::filesystem::path executable;
   std::FILE* log = stderr;  ///< progress lines; nullptr: none
 };

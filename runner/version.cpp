@@ -8,6 +8,7 @@
 #include <string>
 
 #include "engine/fingerprint.hpp"
+#include "runner/self_program.hpp"
 
 namespace rodsort::runner {
 namespace {
@@ -20,10 +21,10 @@ constexpr const char* kCompiler = "gcc " __VERSION__;
 constexpr const char* kCompiler = "an unknown compiler";
 #endif
 
-/// The fingerprint of this process's executable as 16 hex digits; "unknown" where it cannot be
-/// read.
+/// The fingerprint of the rodsort program's file as 16 hex digits (not of a loader that started
+/// it); "unknown" where it cannot be read.
 std::string executable_fingerprint() {
-  std::ifstream in("/proc/self/exe", std::ios::binary);
+  std::ifstream in(program_file(), std::ios::binary);
   if (!in) return "unknown";
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad() || bytes.empty()) return "unknown";

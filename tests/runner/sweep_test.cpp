@@ -278,7 +278,8 @@ TEST_CASE("sweep --slurm --no-submit writes a job array of the points still to r
     CHECK_THAT(script, Catch::Contains(line));
   }
   CHECK_THAT(script, Catch::Contains("--point \"$SLURM_ARRAY_TASK_ID\" --set seed=11\n"));
-  CHECK_THAT(script, Catch::Contains("exec "));
+  CHECK_THAT(script,
+             Catch::Contains("exec " + rodsort::runner::testing::kRodsortProgram + " sweep "));
   // The table lists the points before any has run.
   CHECK(read_csv(sweep / "sweep.csv").rows.size() == 2);
 
