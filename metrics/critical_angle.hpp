@@ -46,4 +46,19 @@ struct CriticalAngle {
 /// plateau_points + 2 angles or a plateau below kMinPlateauEta.
 CriticalAngle critical_angle(std::vector<SweepPoint> points, int plateau_points = 3);
 
+/// theta_c of each seed of a sweep alone, and their spread: the error bar of theta_c.
+struct SeedCriticalAngles {
+  std::vector<CriticalAngle> per_seed;  ///< in the order of the seeds given
+  int found = 0;                        ///< seeds with a theta_c
+  /// Mean, standard deviation and standard error (sd / sqrt(found)) over the seeds with a
+  /// theta_c; NaN for fewer than one (mean) or two (sd, standard error).
+  double mean = std::numeric_limits<double>::quiet_NaN();
+  double standard_deviation = std::numeric_limits<double>::quiet_NaN();
+  double standard_error = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// critical_angle of each seed's points on their own.
+SeedCriticalAngles critical_angle_per_seed(const std::vector<std::vector<SweepPoint>>& seeds,
+                                           int plateau_points = 3);
+
 }  // namespace rodsort::metrics

@@ -71,6 +71,57 @@ std::string group_label(const std::vector<std::string>& keys,
   return label.empty() ? "all points" : label;
 }
 
+/// The complete points (seeds) at one angle.
+struct AngleRuns {
+  std::vector<double> etas;
+  double levelled_at = 0.0;  ///< the latest time to 90% (NaN once one never got there)
+  double duration = std::numeric_limits<double>::infinity();  ///< the shortest run
+};
+
+/// theta_c of each seed of a group alone and their mean: printed, and one row per seed.
+void report_seeds(const std::vector<std::string>& group,
+                  const std::map<double, std::map<double, AngleRuns>>& seeds,
+                  const metrics::SeedCriticalAngles& spread, std::ostream& out, CsvTable& rows) {
+  out << "    each seed alone:";
+  std::size_t i = 0;
+  for (const auto& [seed, angles] : seeds) {
+    const metrics::CriticalAngle& critical = spread.per_seed[i++];
+    std::vector<std::string> row = group;
+    row.push_back(scenarios::format_real(seed));
+    char text[64];
+    if (critical.found) {
+      std::snprintf(text, sizeof text, " %s: %.4g%s", scenarios::format_real(seed).c_str(),
+                    critical.angle, critical.caution.empty() ? "" : " (caution)");
+      for (const double value :
+           {critical.angle, critical.below, critical.above, critical.plateau}) {
+        row.push_back(scenarios::format_real(value));
+      }
+    } else {
+      std::snprintf(text, sizeof text, " %s: none", scenarios::format_real(seed).c_str());
+      row.insert(row.end(), {"nan", "nan", "nan", "nan"});
+    }
+    out << text << (i < seeds.size() ? "," : "\n");
+    row.push_back(std::to_string(angles.size()));
+    row.push_back(critical.found ? (critical.caution.empty() ? "" : "caution: " + critical.caution)
+                                 : critical.reason);
+    rows.rows.push_back(std::move(row));
+  }
+  char line[200];
+  if (spread.found >= 2) {
+    std::snprintf(line, sizeof line,
+                  "    theta_c = %.4g +- %.2g deg (mean +- standard error over the %d of %zu seeds "
+                  "that have one; standard deviation %.2g)\n",
+                  spread.mean, spread.standard_error, spread.found, seeds.size(),
+                  spread.standard_deviation);
+  } else {
+    std::snprintf(line, sizeof line,
+                  "    no error bar: %d of %zu seeds alone have a theta_c (see "
+                  "critical_angle_seeds.csv for why not)\n",
+                  spread.found, seeds.size());
+  }
+  out << line;
+}
+
 void report_critical_angles(const std::filesystem::path& sweep_directory, const CsvTable& table,
                             const std::vector<std::string>& keys, std::ostream& out) {
   const std::size_t angle_column = *table.column(kAngleKey);
@@ -90,40 +141,31 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
     const auto value = column ? parse_number(row[*column]) : std::nullopt;
     return value ? *value : std::numeric_limits<double>::quiet_NaN();
   };
-  // The complete points (seeds) at one angle.
-  struct AngleRuns {
-    std::vector<double> etas;
-    double levelled_at = 0.0;  ///< the latest time to 90% (NaN once one never got there)
-    double duration = std::numeric_limits<double>::infinity();  ///< the shortest run
-  };
-  // group values -> angle -> its runs
-  std::map<std::vector<std::string>, std::map<double, AngleRuns>> groups;
-  for (const auto& row : table.rows) {
-    std::vector<std::string> group;
-    for (const std::size_t column : group_columns) group.push_back(row[column]);
-    auto& angles = groups[group];
-    const auto angle = parse_number(row[angle_column]);
-    const auto eta = eta_column ? parse_number(row[*eta_column]) : std::nullopt;
-    if (row[status_column] != "complete" || !angle || !eta || !std::isfinite(*eta)) continue;
-    AngleRuns& runs = angles[*angle];
-    runs.etas.push_back(*eta);
+  const auto add_run = [&](AngleRuns& runs, double eta, const std::vector<std::string>& row) {
+    runs.etas.push_back(eta);
     // A run that never reached 90% makes the angle's time NaN for good.
     const double levelled_at = number_at(row, levelled_column);
     runs.levelled_at = std::isnan(levelled_at) || std::isnan(runs.levelled_at)
                            ? std::numeric_limits<double>::quiet_NaN()
                            : std::max(runs.levelled_at, levelled_at);
     runs.duration = std::min(runs.duration, number_at(row, duration_column));
+  };
+  // group values -> angle -> its runs; and the same for each seed of the group alone
+  std::map<std::vector<std::string>, std::map<double, AngleRuns>> groups;
+  std::map<std::vector<std::string>, std::map<double, std::map<double, AngleRuns>>> seed_groups;
+  const auto seed_column = table.column(kSeedKey);
+  for (const auto& row : table.rows) {
+    std::vector<std::string> group;
+    for (const std::size_t column : group_columns) group.push_back(row[column]);
+    auto& angles = groups[group];
+    const auto angle = parse_number(row[angle_column]);
+    const double eta = number_at(row, eta_column);
+    if (row[status_column] != "complete" || !angle || !std::isfinite(eta)) continue;
+    add_run(angles[*angle], eta, row);
+    const auto seed = seed_column ? parse_number(row[*seed_column]) : std::nullopt;
+    if (seed) add_run(seed_groups[group][*seed][*angle], eta, row);
   }
-
-  CsvTable result;
-  result.header = group_keys;
-  for (const char* column :
-       {"theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note"}) {
-    result.header.push_back(column);
-  }
-  out << "\ntheta_c: the angle where eta (mean over seeds) falls through half its low-angle "
-         "plateau\n";
-  for (const auto& [group, angles] : groups) {
+  const auto sweep_points = [](const std::map<double, AngleRuns>& angles) {
     std::vector<metrics::SweepPoint> points;
     for (const auto& [angle, runs] : angles) {
       double sum = 0.0;
@@ -135,6 +177,26 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
       }
       points.push_back(point);
     }
+    return points;
+  };
+
+  CsvTable result;
+  result.header = group_keys;
+  for (const char* column :
+       {"theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note",
+        "theta_c_seed_mean_deg", "theta_c_seed_stderr_deg", "seeds_found"}) {
+    result.header.push_back(column);
+  }
+  CsvTable seed_rows;
+  seed_rows.header = group_keys;
+  for (const char* column :
+       {"seed", "theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note"}) {
+    seed_rows.header.push_back(column);
+  }
+  out << "\ntheta_c: the angle where eta (mean over seeds) falls through half its low-angle "
+         "plateau\n";
+  for (const auto& [group, angles] : groups) {
+    const std::vector<metrics::SweepPoint> points = sweep_points(angles);
     const metrics::CriticalAngle critical = metrics::critical_angle(points);
     std::vector<std::string> row = group;
     char line[256];
@@ -160,9 +222,27 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
     if (critical.found && !critical.caution.empty()) {
       out << "    caution: " << critical.caution << '\n';
     }
+    const auto seeds = seed_groups.find(group);
+    if (seeds != seed_groups.end() && seeds->second.size() >= 2) {
+      std::vector<std::vector<metrics::SweepPoint>> per_seed;
+      for (const auto& [seed, seed_angles] : seeds->second) {
+        per_seed.push_back(sweep_points(seed_angles));
+      }
+      const metrics::SeedCriticalAngles spread = metrics::critical_angle_per_seed(per_seed);
+      report_seeds(group, seeds->second, spread, out, seed_rows);
+      for (const double value : {spread.mean, spread.standard_error}) {
+        row.push_back(std::isnan(value) ? "nan" : scenarios::format_real(value));
+      }
+      row.push_back(std::to_string(spread.found) + " of " + std::to_string(per_seed.size()));
+    } else {
+      row.insert(row.end(), {"nan", "nan", ""});
+    }
     result.rows.push_back(std::move(row));
   }
   write_file_atomically(sweep_directory / "critical_angle.csv", csv_text(result));
+  if (!seed_rows.rows.empty()) {
+    write_file_atomically(sweep_directory / "critical_angle_seeds.csv", csv_text(seed_rows));
+  }
 }
 
 }  // namespace

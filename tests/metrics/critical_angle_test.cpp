@@ -1,6 +1,7 @@
 #include "metrics/critical_angle.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -86,4 +87,39 @@ TEST_CASE("theta_c is cautioned when a trap beyond the drop fills again", "[metr
   std::vector<SweepPoint> monotonic = seed3;
   monotonic.back().eta = 0.03;
   CHECK(critical_angle(monotonic).caution.empty());
+}
+
+TEST_CASE("theta_c per seed: each seed alone, then their mean and standard error", "[metrics]") {
+  // Three seeds over the same angles, dropping through half their plateau (0.4) at 125°, 135°
+  // and 130° (each halfway between two angles), and a fourth whose traps never filled.
+  const auto seed = [](double at_120, double at_130, double at_140) {
+    return std::vector<SweepPoint>{{100, 0.8},    {105, 0.8},    {110, 0.8},
+                                   {120, at_120}, {130, at_130}, {140, at_140}};
+  };
+  const std::vector<std::vector<SweepPoint>> seeds = {
+      seed(0.7, 0.1, 0.0),
+      seed(0.8, 0.6, 0.2),
+      seed(0.8, 0.5, 0.0),
+      {{100, 0.05}, {105, 0.0}, {110, 0.0}, {120, 0.0}, {130, 0.0}}};
+  const SeedCriticalAngles c = critical_angle_per_seed(seeds);
+  REQUIRE(c.per_seed.size() == 4);
+  CHECK(c.per_seed[0].angle == Approx(125.0));
+  CHECK(c.per_seed[1].angle == Approx(135.0));
+  CHECK(c.per_seed[2].angle == Approx(130.0 + 10.0 * (0.5 - 0.4) / (0.5 - 0.0)));
+  CHECK_FALSE(c.per_seed[3].found);
+  CHECK_THAT(c.per_seed[3].reason, Catch::Contains("have not filled"));
+  REQUIRE(c.found == 3);
+  const double mean = (125.0 + 135.0 + 132.0) / 3.0;
+  CHECK(c.mean == Approx(mean));
+  const double sd = std::sqrt(((125.0 - mean) * (125.0 - mean) + (135.0 - mean) * (135.0 - mean) +
+                               (132.0 - mean) * (132.0 - mean)) /
+                              2.0);
+  CHECK(c.standard_deviation == Approx(sd));
+  CHECK(c.standard_error == Approx(sd / std::sqrt(3.0)));
+
+  // One seed with a theta_c has a mean but no spread.
+  const SeedCriticalAngles one = critical_angle_per_seed({seeds[0], seeds[3]});
+  CHECK(one.found == 1);
+  CHECK(one.mean == Approx(125.0));
+  CHECK(std::isnan(one.standard_error));
 }

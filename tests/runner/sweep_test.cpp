@@ -136,6 +136,37 @@ TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][
   }
 }
 
+TEST_CASE("summarize gives theta_c of each seed alone beside that of the seeds' mean",
+          "[runner][sweep]") {
+  TempDirectory directory;
+  const auto sweep = directory / "sweep";
+  SweepRequest request = tiny_sweep(sweep);
+  request.sweep_file = RODSORT_SOURCE_DIR "/tests/runner/data/tiny-seeds-sweep.yaml";
+  std::ostringstream out, err;
+  REQUIRE(run_sweep(request, out, err) == kExitOk);
+  std::ostringstream summary;
+  REQUIRE(summarize_sweep(sweep, summary, err) == kExitOk);
+  INFO(summary.str());
+  // Four rods for 0.35 s fill no trap: no theta_c, for the mean nor for either seed, and why.
+  CHECK_THAT(summary.str(), Catch::Contains("all points: not found"));
+  CHECK_THAT(summary.str(), Catch::Contains("each seed alone: 1: none, 2: none\n"));
+  CHECK_THAT(summary.str(), Catch::Contains("no error bar: 0 of 2 seeds alone have a theta_c"));
+  const CsvTable seeds = read_csv(sweep / "critical_angle_seeds.csv");
+  REQUIRE(seeds.rows.size() == 2);
+  CHECK(seeds.header == std::vector<std::string>{"seed", "theta_c_deg", "below_deg", "above_deg",
+                                                 "plateau_eta", "angles", "note"});
+  for (std::size_t s = 0; s < 2; ++s) {
+    CHECK(seeds.rows[s][0] == std::to_string(s + 1));
+    CHECK(seeds.rows[s][1] == "nan");
+    CHECK(seeds.rows[s][5] == "5");
+    CHECK_THAT(seeds.rows[s][6], Catch::Contains("have not filled"));
+  }
+  const CsvTable pooled = read_csv(sweep / "critical_angle.csv");
+  REQUIRE(pooled.rows.size() == 1);
+  CHECK(pooled.rows[0][*pooled.column("seeds_found")] == "0 of 2");
+  CHECK(pooled.rows[0][*pooled.column("theta_c_seed_stderr_deg")] == "nan");
+}
+
 TEST_CASE("a sweep with a bad point is refused before anything is written", "[runner][sweep]") {
   TempDirectory directory;
   write_file_atomically(directory / "tiny.yaml",
