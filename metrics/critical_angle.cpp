@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "metrics/sample_statistics.hpp"
+
 namespace rodsort::metrics {
 
 CriticalAngle critical_angle(std::vector<SweepPoint> points, int plateau_points) {
@@ -87,22 +89,18 @@ CriticalAngle critical_angle(std::vector<SweepPoint> points, int plateau_points)
 SeedCriticalAngles critical_angle_per_seed(const std::vector<std::vector<SweepPoint>>& seeds,
                                            int plateau_points) {
   SeedCriticalAngles result;
-  double sum = 0.0;
+  std::vector<double> angles;
   for (const std::vector<SweepPoint>& points : seeds) {
     result.per_seed.push_back(critical_angle(points, plateau_points));
-    if (!result.per_seed.back().found) continue;
-    ++result.found;
-    sum += result.per_seed.back().angle;
+    if (result.per_seed.back().found) angles.push_back(result.per_seed.back().angle);
   }
-  if (result.found == 0) return result;
-  result.mean = sum / result.found;
-  if (result.found < 2) return result;
-  double squares = 0.0;
-  for (const CriticalAngle& seed : result.per_seed) {
-    if (seed.found) squares += (seed.angle - result.mean) * (seed.angle - result.mean);
-  }
-  result.standard_deviation = std::sqrt(squares / (result.found - 1));
-  result.standard_error = result.standard_deviation / std::sqrt(result.found);
+  result.found = static_cast<int>(angles.size());
+  if (angles.empty()) return result;
+  const SampleStatistics statistics = sample_statistics(angles);
+  result.mean = statistics.mean;
+  if (angles.size() < 2) return result;
+  result.standard_deviation = statistics.deviation;
+  result.standard_error = statistics.standard_error;
   return result;
 }
 
