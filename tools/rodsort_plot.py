@@ -429,11 +429,7 @@ class Sweep:
             curve = []
             for angle in sorted(by_angle):
                 values = by_angle[angle]
-                mean = sum(values) / len(values)
-                spread = 0.0
-                if len(values) > 1:
-                    variance = sum((v - mean) ** 2 for v in values) / (len(values) - 1)
-                    spread = math.sqrt(variance / len(values))
+                mean, spread = mean_and_standard_error(values)
                 curve.append((angle, mean, spread, len(values)))
             self.curves[key] = curve
 
@@ -492,6 +488,16 @@ def save(plt, figure, out_dir, name, formats, written):
         figure.savefig(path, dpi=120)
         written.append(path)
     plt.close(figure)
+
+
+def mean_and_standard_error(values):
+    """The mean of values and its standard error (sample standard deviation over the square root
+    of their number); the error is 0 for a single value."""
+    mean = sum(values) / len(values)
+    if len(values) < 2:
+        return mean, 0.0
+    variance = sum((v - mean) ** 2 for v in values) / (len(values) - 1)
+    return mean, math.sqrt(variance / len(values))
 
 
 def run_metrics(run_dir, until):
@@ -696,12 +702,7 @@ def plot_measures(plt, sweep_dir, out_dir, formats, written):
             if not by_x:
                 continue
             xs = sorted(by_x)
-            means = [sum(by_x[x]) / len(by_x[x]) for x in xs]
-            errors = []
-            for x, mean in zip(xs, means):
-                v = by_x[x]
-                errors.append(math.sqrt(sum((a - mean) ** 2 for a in v) / (len(v) - 1) / len(v))
-                              if len(v) > 1 else 0.0)
+            means, errors = zip(*(mean_and_standard_error(by_x[x]) for x in xs))
             label = names.get(measure, measure[:-len("_mean")].replace("purity_", "purity of "))
             if group:
                 label += " (" + ", ".join(physics_value(c, v, species)
