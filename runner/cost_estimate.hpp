@@ -5,9 +5,12 @@
 // trap fills move it.
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/model.hpp"
+#include "runner/run_record.hpp"
 
 namespace rodsort::runner {
 
@@ -19,6 +22,10 @@ inline constexpr double kRodStepCostFilled = 1.36e-6;     ///< 397 rods while a 
 inline constexpr double kRoughRodStepCost = 1.0e-6;
 inline constexpr double kRoughCostPerSlope = 80.0e-6;
 
+/// A run's own cost counts once it has taken this fraction of its steps: the rate of its first
+/// moments, before the rods meet and a trap fills, says little about the rest.
+inline constexpr double kMeasuredMinFraction = 0.05;
+
 struct CostEstimate {
   double low_cpu_s;   ///< rods spread out all the time
   double high_cpu_s;  ///< a trap filled from the start
@@ -26,7 +33,25 @@ struct CostEstimate {
 
 CostEstimate estimate_cost(const engine::Model& model, std::int64_t steps);
 
-/// "about 2.5-5.4 CPU-min", with the unit chosen for the larger figure.
+/// The CPU time per rod and step [s] a run has cost so far, from its run.json; nullopt before
+/// it has taken kMeasuredMinFraction of its steps.
+std::optional<double> measured_rod_step_cost(const RunRecord& record);
+
+struct MeasuredCost {
+  double rod_step_cpu_s;  ///< the median over the runs [s]
+  std::size_t runs;       ///< how many runs had a measured cost
+};
+
+/// The median of the runs' measured costs per rod and step; nullopt when none has one.
+std::optional<MeasuredCost> median_rod_step_cost(const std::vector<RunRecord>& records);
+
+/// What is left of a run that has taken `done_steps` of `total_steps` in `cpu_s`, at its own
+/// rate so far (both ends equal); nullopt before it has taken kMeasuredMinFraction of them.
+std::optional<CostEstimate> cost_at_own_rate(std::int64_t done_steps, std::int64_t total_steps,
+                                             double cpu_s);
+
+/// "about 2.5-5.4 CPU-min", with the unit chosen for the larger figure; "about 3.1 CPU-h" when
+/// both ends agree.
 std::string describe_cost(const CostEstimate& cost);
 
 }  // namespace rodsort::runner

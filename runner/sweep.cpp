@@ -45,8 +45,12 @@ struct PointPlan {
   std::string resolved_yaml;
   PointAction action = PointAction::kStart;
   std::size_t rods = 0;
-  double duration = 0.0;  ///< run.duration [s]
-  CostEstimate cost{};    ///< of the whole run
+  double duration = 0.0;            ///< run.duration [s]
+  std::int64_t steps = 0;           ///< of the whole run
+  std::int64_t steps_left = 0;      ///< of what is left to run
+  CostEstimate cost{};              ///< of what is left to run
+  std::optional<RunRecord> record;  ///< of the run this point holds, if any
+  bool own_rate = false;            ///< `cost` is what is left at the run's own rate so far
   bool foreign = false;   ///< holds another scenario; left alone (only --point gets this far)
 };
 
@@ -150,11 +154,14 @@ void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& poi
   for (const std::string& key : sweep.keys) out << ' ' << key;
   out << '\n';
   CostEstimate total{0.0, 0.0};
+  std::vector<RunRecord> records;
   for (const PointPlan& point : points) {
     out << "  " << point.name << ": "
         << (point.foreign ? "holds another scenario, left alone" : describe_action(point.action));
+    if (point.record) records.push_back(*point.record);
     if (point.action != PointAction::kSkip) {
-      out << " (" << point.rods << " rods, " << describe_cost(point.cost) << ')';
+      out << " (" << point.rods << " rods, " << describe_cost(point.cost)
+          << (point.own_rate ? " left, at its own rate so far" : "") << ')';
       total.low_cpu_s += point.cost.low_cpu_s;
       total.high_cpu_s += point.cost.high_cpu_s;
     }
@@ -162,8 +169,25 @@ void print_plan(const scenarios::Sweep& sweep, const std::vector<PointPlan>& poi
   }
   if (total.high_cpu_s > 0.0) {
     out << "to run: " << describe_cost(total)
-        << " in all, from rods spread out to a filled trap (docs/performance.md); resumed "
-           "points cost less\n";
+        << " in all, from rods spread out to a filled trap (docs/performance.md); what is left "
+           "of a point past a twentieth of its run, at its own rate so far\n";
+    // The range is measured on one machine; the runs this sweep has made say what this one does.
+    const auto measured = median_rod_step_cost(records);
+    if (measured) {
+      double at_measured = 0.0;
+      for (const PointPlan& point : points) {
+        if (point.action == PointAction::kSkip) continue;
+        at_measured += point.own_rate ? point.cost.high_cpu_s
+                                      : measured->rod_step_cpu_s * static_cast<double>(point.rods) *
+                                            static_cast<double>(point.steps_left);
+      }
+      char rate[64];
+      std::snprintf(rate, sizeof rate, "%.2f", measured->rod_step_cpu_s * 1e6);
+      out << "at the cost this sweep's runs have measured here (" << rate
+          << " us per rod per step, the median of " << measured->runs
+          << (measured->runs == 1 ? " run" : " runs")
+          << "): " << describe_cost({at_measured, at_measured}) << " in all\n";
+    }
   } else {
     out << "nothing to run\n";
   }
@@ -357,9 +381,22 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     plan.resolved_yaml = scenarios::resolved_yaml(*scenario.scenario);
     plan.rods = scenario.scenario->model.rods.size();
     plan.duration = scenario.scenario->run.duration;
-    plan.cost = estimate_cost(scenario.scenario->model, scenario.scenario->run.steps);
+    plan.steps = scenario.scenario->run.steps;
+    plan.steps_left = plan.steps;
+    plan.cost = estimate_cost(scenario.scenario->model, plan.steps);
     std::string conflict;
     plan.action = decide(directory / point.name, plan, request.force, conflict);
+    const bool continued =
+        plan.action == PointAction::kResume || plan.action == PointAction::kExtend;
+    if (continued || (plan.action == PointAction::kSkip && conflict.empty())) {
+      plan.record = read_run_record(directory / point.name);
+    }
+    if (continued && plan.record) {
+      plan.steps_left = std::max<std::int64_t>(plan.steps - plan.record->steps, 0);
+      const auto own = cost_at_own_rate(plan.record->steps, plan.steps, plan.record->cpu_s);
+      plan.own_rate = own.has_value();
+      plan.cost = own ? *own : estimate_cost(scenario.scenario->model, plan.steps_left);
+    }
     // --point runs one point: what the others hold (one continued beyond the sweep's duration
     // with `run --resume --duration`, say) does not stop it, nor the other tasks of a job array.
     const bool chosen =

@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 #include <csignal>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -10,6 +11,7 @@
 #include "metrics/rods_csv.hpp"
 #include "runner/atomic_file.hpp"
 #include "runner/checkpoint.hpp"
+#include "runner/cost_estimate.hpp"
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
 #include "runner/run_command.hpp"
@@ -184,8 +186,25 @@ TEST_CASE("a run stopped by SIGINT resumes to exactly the same files", "[runner]
   CHECK_THAT(record->message, Catch::Contains("SIGINT"));
 
   std::ostringstream err;
-  REQUIRE(resume_run_directory(stopped, silent(), err) == kExitOk);
+  RunOptions logged = silent();
+  std::FILE* log = std::tmpfile();
+  logged.log = log;
+  REQUIRE(resume_run_directory(stopped, logged, err) == kExitOk);
   check_same_outputs(directory / "whole", stopped);
+  // 1400 of 3500 steps, two fifths of the run: what is left is costed at the run's own rate.
+  std::rewind(log);
+  char line[512] = {};
+  REQUIRE(std::fgets(line, sizeof line, log) != nullptr);
+  std::fclose(log);
+  CHECK_THAT(std::string(line),
+             Catch::StartsWith("rodsort: resuming tiny at t = 0.14 s of 0.35 s"));
+  double left_cpu_s = 0.0;
+  const char* about = std::strstr(line, "; about ");
+  REQUIRE(about != nullptr);
+  REQUIRE(std::sscanf(about, "; about %lf CPU-s left, at its own rate so far", &left_cpu_s) == 1);
+  // The checkpoint's CPU time, a moment before run.json's, and two digits.
+  CHECK(left_cpu_s == Approx(record->cpu_s / 1400 * 2100).epsilon(0.2));
+  CHECK_THAT(std::string(line), Catch::EndsWith(" CPU-s left, at its own rate so far\n"));
   const auto resumed = read_run_record(stopped);
   CHECK(resumed->status == RunStatus::kComplete);
   CHECK(resumed->sessions == 2);

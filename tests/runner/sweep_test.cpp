@@ -119,6 +119,24 @@ TEST_CASE("a two-point sweep runs each point into its own directory", "[runner][
     CHECK(read_csv(sweep / "sweep.csv").rows[0][2] == "complete");
   }
 
+  SECTION("a dry run to a longer duration prices what is left at the runs' own rate") {
+    SweepRequest longer = tiny_sweep(sweep);
+    longer.set_options = {"run.duration=0.49"};
+    longer.dry_run = true;
+    REQUIRE(run_sweep(longer, out, err) == kExitOk);
+    // 3500 of 4900 steps done: 1400 left, at each run's CPU time per step so far.
+    for (const char* point : {"angle-40", "angle-60"}) {
+      INFO(point);
+      const RunRecord record = *read_run_record(sweep / point);
+      CHECK_THAT(out.str(),
+                 Catch::Contains(std::string(point) + ": to continue to the new " +
+                                 "run.duration (4 rods, " +
+                                 describe_cost(*cost_at_own_rate(3500, 4900, record.cpu_s)) +
+                                 " left, at its own rate so far)"));
+    }
+    CHECK_THAT(out.str(), Catch::Contains("us per rod per step, the median of 2 runs): about"));
+  }
+
   SECTION("a complete sweep has nothing to submit to Slurm") {
     SweepRequest slurm = tiny_sweep(sweep);
     slurm.slurm.enabled = true;
@@ -210,6 +228,40 @@ TEST_CASE("a cost estimate scales with rods and steps, and rough plates cost mor
   CHECK(rough.low_cpu_s / (100 * 10000) == Approx(5.6e-6).epsilon(0.1));
   CHECK(describe_cost({90.0, 200.0}) == "about 1.5-3.3 CPU-min");
   CHECK(describe_cost({3.0 * 3600, 8.0 * 3600}) == "about 3-8 CPU-h");
+  CHECK(describe_cost({3.1 * 3600, 3.1 * 3600}) == "about 3.1 CPU-h");
+}
+
+TEST_CASE("what runs have cost so far prices what is left of them", "[runner][sweep]") {
+  // 1268 rods, 60 of 300 s at dt = 1e-4 in 2100 CPU-s: 35 CPU-s per simulated s.
+  const auto own = cost_at_own_rate(600000, 3000000, 2100.0);
+  REQUIRE(own.has_value());
+  CHECK(own->low_cpu_s == Approx(35.0 * 240.0));
+  CHECK(own->high_cpu_s == own->low_cpu_s);
+  // Before a twentieth of the run the rate is its first moments' and is not used.
+  CHECK_FALSE(cost_at_own_rate(149999, 3000000, 60.0).has_value());
+  CHECK(cost_at_own_rate(150000, 3000000, 60.0).has_value());
+
+  RunRecord record;
+  record.rods = 1268;
+  record.total_steps = 3000000;
+  record.steps = 600000;
+  record.cpu_s = 2100.0;
+  RunRecord slower = record;
+  slower.cpu_s = 2 * record.cpu_s;
+  RunRecord early = record;
+  early.steps = 1000;
+  early.cpu_s = 1.0;
+  const auto one_per_rod_step = record.cpu_s / (1268.0 * 600000.0);
+  REQUIRE(measured_rod_step_cost(record).has_value());
+  CHECK(*measured_rod_step_cost(record) == Approx(one_per_rod_step));
+  CHECK_FALSE(measured_rod_step_cost(early).has_value());
+  CHECK_FALSE(median_rod_step_cost({early}).has_value());
+  const auto median = median_rod_step_cost({record, early, slower});
+  REQUIRE(median.has_value());
+  CHECK(median->runs == 2);
+  CHECK(median->rod_step_cpu_s == Approx(1.5 * one_per_rod_step));
+  CHECK(median_rod_step_cost({record, slower, slower})->rod_step_cpu_s ==
+        Approx(2 * one_per_rod_step));
 }
 
 TEST_CASE("summarize refuses a directory that is not a sweep", "[runner][sweep]") {
