@@ -50,6 +50,12 @@ std::optional<CostEstimate> cost_at_own_rate(std::int64_t done_steps, std::int64
   return CostEstimate{cost, cost};
 }
 
+RemainingCost remaining_cost(const engine::Model& model, std::int64_t done_steps,
+                             std::int64_t total_steps, double cpu_s) {
+  if (const auto own = cost_at_own_rate(done_steps, total_steps, cpu_s)) return {*own, true};
+  return {estimate_cost(model, std::max<std::int64_t>(total_steps - done_steps, 0)), false};
+}
+
 std::string describe_cost(const CostEstimate& cost) {
   double scale = 1.0;
   const char* unit = "CPU-s";

@@ -50,6 +50,16 @@ std::optional<MeasuredCost> median_rod_step_cost(const std::vector<RunRecord>& r
 std::optional<CostEstimate> cost_at_own_rate(std::int64_t done_steps, std::int64_t total_steps,
                                              double cpu_s);
 
+struct RemainingCost {
+  CostEstimate cost;
+  bool own_rate;  ///< at the run's own rate so far, not the measured range
+};
+
+/// What is left of a run that has taken `done_steps` of `total_steps` in `cpu_s`: at its own
+/// rate when it has one (cost_at_own_rate), else the range for the steps left.
+RemainingCost remaining_cost(const engine::Model& model, std::int64_t done_steps,
+                             std::int64_t total_steps, double cpu_s);
+
 /// "about 2.5-5.4 CPU-min", with the unit chosen for the larger figure; "about 3.1 CPU-h" when
 /// both ends agree.
 std::string describe_cost(const CostEstimate& cost);

@@ -102,15 +102,13 @@ class RunSession {
                               f == 0 ? refill : FrameFile::Visit());
     }
     begin_session(true);
-    const std::int64_t done = simulation_.step_count();
-    const auto own = cost_at_own_rate(done, plan_.schedule.total_steps, prior_cpu_s_);
-    const std::string left =
-        own ? describe_cost(*own) + " left, at its own rate so far"
-            : describe_cost(estimate_cost(
-                  plan_.model, std::max<std::int64_t>(plan_.schedule.total_steps - done, 0))) +
-                  " left (docs/performance.md)";
+    const RemainingCost left = remaining_cost(plan_.model, simulation_.step_count(),
+                                              plan_.schedule.total_steps, prior_cpu_s_);
+    const std::string left_text =
+        describe_cost(left.cost) +
+        (left.own_rate ? " left, at its own rate so far" : " left (docs/performance.md)");
     log("rodsort: resuming %s at t = %g s of %g s in %s; %s\n", plan_.name.c_str(),
-        simulation_.time(), plan_.duration_s, directory_.c_str(), left.c_str());
+        simulation_.time(), plan_.duration_s, directory_.c_str(), left_text.c_str());
     write_record(RunStatus::kRunning, "");
     return loop();
   }

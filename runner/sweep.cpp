@@ -46,7 +46,6 @@ struct PointPlan {
   PointAction action = PointAction::kStart;
   std::size_t rods = 0;
   double duration = 0.0;            ///< run.duration [s]
-  std::int64_t steps = 0;           ///< of the whole run
   std::int64_t steps_left = 0;      ///< of what is left to run
   CostEstimate cost{};              ///< of what is left to run
   std::optional<RunRecord> record;  ///< of the run this point holds, if any
@@ -381,9 +380,9 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
     plan.resolved_yaml = scenarios::resolved_yaml(*scenario.scenario);
     plan.rods = scenario.scenario->model.rods.size();
     plan.duration = scenario.scenario->run.duration;
-    plan.steps = scenario.scenario->run.steps;
-    plan.steps_left = plan.steps;
-    plan.cost = estimate_cost(scenario.scenario->model, plan.steps);
+    const std::int64_t steps = scenario.scenario->run.steps;
+    plan.steps_left = steps;
+    plan.cost = estimate_cost(scenario.scenario->model, steps);
     std::string conflict;
     plan.action = decide(directory / point.name, plan, request.force, conflict);
     const bool continued =
@@ -392,10 +391,11 @@ int run_sweep(const SweepRequest& request, std::ostream& out, std::ostream& err)
       plan.record = read_run_record(directory / point.name);
     }
     if (continued && plan.record) {
-      plan.steps_left = std::max<std::int64_t>(plan.steps - plan.record->steps, 0);
-      const auto own = cost_at_own_rate(plan.record->steps, plan.steps, plan.record->cpu_s);
-      plan.own_rate = own.has_value();
-      plan.cost = own ? *own : estimate_cost(scenario.scenario->model, plan.steps_left);
+      plan.steps_left = std::max<std::int64_t>(steps - plan.record->steps, 0);
+      const RemainingCost left =
+          remaining_cost(scenario.scenario->model, plan.record->steps, steps, plan.record->cpu_s);
+      plan.cost = left.cost;
+      plan.own_rate = left.own_rate;
     }
     // --point runs one point: what the others hold (one continued beyond the sweep's duration
     // with `run --resume --duration`, say) does not stop it, nor the other tasks of a job array.
