@@ -47,7 +47,8 @@ Command add_summarize_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "summarize",
       "Print a sweep's time-averaged eta per point, and theta_c when the angle was swept; or, for "
-      "run directories, eta(t) in windows and the nucleation attempts");
+      "run directories, eta(t) in windows and the nucleation attempts, and theta_c when they are "
+      "runs of one scenario at several angles");
   command->add_option("PATH", options->paths, "One sweep directory, or one or more run directories")
       ->required()
       ->check(CLI::ExistingDirectory);

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <ostream>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,12 +22,14 @@
 #include "runner/run_summary.hpp"
 #include "runner/sweep.hpp"
 #include "scenarios/number_text.hpp"
+#include "scenarios/source_node.hpp"
 
 namespace rodsort::runner {
 namespace {
 
 constexpr const char* kAngleKey = "trap.angle";
 constexpr const char* kSeedKey = "seed";
+constexpr const char* kSeedsCsvFile = "critical_angle_seeds.csv";
 
 std::optional<double> parse_number(const std::string& text) {
   double value = 0.0;
@@ -78,10 +82,39 @@ struct AngleRuns {
   double duration = std::numeric_limits<double>::infinity();  ///< the shortest run
 };
 
+/// angle -> the runs at that angle
+using AngleMap = std::map<double, AngleRuns>;
+
+void add_run(AngleRuns& runs, double eta, double levelled_at, double duration) {
+  runs.etas.push_back(eta);
+  // A run that never reached 90% makes the angle's time NaN for good.
+  runs.levelled_at = std::isnan(levelled_at) || std::isnan(runs.levelled_at)
+                         ? std::numeric_limits<double>::quiet_NaN()
+                         : std::max(runs.levelled_at, levelled_at);
+  runs.duration = std::min(runs.duration, duration);
+}
+
+/// One point per angle: the mean eta of its runs, with the latest time to 90% and the shortest run.
+std::vector<metrics::SweepPoint> sweep_points(const AngleMap& angles) {
+  std::vector<metrics::SweepPoint> points;
+  for (const auto& [angle, runs] : angles) {
+    double sum = 0.0;
+    for (const double eta : runs.etas) sum += eta;
+    metrics::SweepPoint point{angle, sum / static_cast<double>(runs.etas.size())};
+    if (std::isfinite(runs.duration)) {
+      point.duration = runs.duration;
+      point.levelled_at = runs.levelled_at;
+    }
+    points.push_back(point);
+  }
+  return points;
+}
+
 /// theta_c of each seed of a group alone and their mean: printed, and one row per seed.
-void report_seeds(const std::vector<std::string>& group,
-                  const std::map<double, std::map<double, AngleRuns>>& seeds,
-                  const metrics::SeedCriticalAngles& spread, std::ostream& out, CsvTable& rows) {
+/// Without `reasons_file`, why a seed has no theta_c is printed under the seeds' line.
+void report_seeds(const std::vector<std::string>& group, const std::map<double, AngleMap>& seeds,
+                  const metrics::SeedCriticalAngles& spread, const char* reasons_file,
+                  std::ostream& out, CsvTable& rows) {
   out << "    each seed alone:";
   std::size_t i = 0;
   for (const auto& [seed, angles] : seeds) {
@@ -106,6 +139,22 @@ void report_seeds(const std::vector<std::string>& group,
                                  : critical.reason);
     rows.rows.push_back(std::move(row));
   }
+  if (!reasons_file) {  // seeds that share a reason on one line, in the order first met
+    std::vector<std::pair<std::string, std::string>> reasons;  // reason, its seeds
+    i = 0;
+    for (const auto& [seed, angles] : seeds) {
+      const metrics::CriticalAngle& critical = spread.per_seed[i++];
+      if (critical.found) continue;
+      auto same = std::find_if(reasons.begin(), reasons.end(),
+                               [&](const auto& reason) { return reason.first == critical.reason; });
+      if (same == reasons.end()) same = reasons.insert(reasons.end(), {critical.reason, ""});
+      same->second += (same->second.empty() ? "" : ", ") + scenarios::format_real(seed);
+    }
+    for (const auto& [reason, seed_list] : reasons) {
+      out << "      seed" << (seed_list.find(',') == std::string::npos ? " " : "s ") << seed_list
+          << ": " << reason << '\n';
+    }
+  }
   char line[200];
   if (spread.found >= 2) {
     std::snprintf(line, sizeof line,
@@ -114,12 +163,83 @@ void report_seeds(const std::vector<std::string>& group,
                   spread.mean, spread.standard_error, spread.found, seeds.size(),
                   spread.standard_deviation);
   } else {
+    const std::string why_not =
+        reasons_file ? "see " + std::string(reasons_file) + " for why not" : "why not: above";
     std::snprintf(line, sizeof line,
-                  "    no error bar: %d of %zu seeds alone have a theta_c (see "
-                  "critical_angle_seeds.csv for why not)\n",
-                  spread.found, seeds.size());
+                  "    no error bar: %d of %zu seeds alone have a theta_c (%s)\n", spread.found,
+                  seeds.size(), why_not.c_str());
   }
   out << line;
+}
+
+/// The tables of theta_c: one row per group of points (critical_angle.csv) and one per seed of a
+/// group (critical_angle_seeds.csv), each led by the group's values of the other swept keys.
+struct CriticalAngleTables {
+  CsvTable groups;
+  CsvTable seeds;
+};
+
+CriticalAngleTables critical_angle_tables(const std::vector<std::string>& group_keys) {
+  CriticalAngleTables tables;
+  tables.groups.header = group_keys;
+  for (const char* column :
+       {"theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note",
+        "theta_c_seed_mean_deg", "theta_c_seed_stderr_deg", "seeds_found"}) {
+    tables.groups.header.push_back(column);
+  }
+  tables.seeds.header = group_keys;
+  for (const char* column :
+       {"seed", "theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note"}) {
+    tables.seeds.header.push_back(column);
+  }
+  return tables;
+}
+
+constexpr const char* kCriticalAngleHeading =
+    "\ntheta_c: the angle where eta (mean over seeds) falls through half its low-angle plateau\n";
+
+/// theta_c of one group's seed-averaged curve and, given two seeds or more, of each seed alone:
+/// printed under `label`, and a row in each of `tables`.
+void report_group(const std::string& label, const std::vector<std::string>& group,
+                  const AngleMap& angles, const std::map<double, AngleMap>& seeds,
+                  const char* reasons_file, std::ostream& out, CriticalAngleTables& tables) {
+  const std::vector<metrics::SweepPoint> points = sweep_points(angles);
+  const metrics::CriticalAngle critical = metrics::critical_angle(points);
+  std::vector<std::string> row = group;
+  char line[256];
+  if (critical.found) {
+    std::snprintf(line, sizeof line,
+                  "  %s: theta_c = %.4g deg (between %.4g and %.4g; plateau eta %.3g)",
+                  label.c_str(), critical.angle, critical.below, critical.above, critical.plateau);
+    for (const double value : {critical.angle, critical.below, critical.above, critical.plateau}) {
+      row.push_back(std::isnan(value) ? "nan" : scenarios::format_real(value));
+    }
+    row.push_back(std::to_string(points.size()));
+    row.push_back(critical.caution.empty() ? "" : "caution: " + critical.caution);
+  } else {
+    std::snprintf(line, sizeof line, "  %s: not found (%s)", label.c_str(),
+                  critical.reason.c_str());
+    for (int i = 0; i < 4; ++i) row.push_back("nan");
+    row.push_back(std::to_string(points.size()));
+    row.push_back(critical.reason);
+  }
+  out << line << '\n';
+  if (critical.found && !critical.caution.empty()) {
+    out << "    caution: " << critical.caution << '\n';
+  }
+  if (seeds.size() >= 2) {
+    std::vector<std::vector<metrics::SweepPoint>> per_seed;
+    for (const auto& [seed, seed_angles] : seeds) per_seed.push_back(sweep_points(seed_angles));
+    const metrics::SeedCriticalAngles spread = metrics::critical_angle_per_seed(per_seed);
+    report_seeds(group, seeds, spread, reasons_file, out, tables.seeds);
+    for (const double value : {spread.mean, spread.standard_error}) {
+      row.push_back(std::isnan(value) ? "nan" : scenarios::format_real(value));
+    }
+    row.push_back(std::to_string(spread.found) + " of " + std::to_string(per_seed.size()));
+  } else {
+    row.insert(row.end(), {"nan", "nan", ""});
+  }
+  tables.groups.rows.push_back(std::move(row));
 }
 
 void report_critical_angles(const std::filesystem::path& sweep_directory, const CsvTable& table,
@@ -141,18 +261,9 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
     const auto value = column ? parse_number(row[*column]) : std::nullopt;
     return value ? *value : std::numeric_limits<double>::quiet_NaN();
   };
-  const auto add_run = [&](AngleRuns& runs, double eta, const std::vector<std::string>& row) {
-    runs.etas.push_back(eta);
-    // A run that never reached 90% makes the angle's time NaN for good.
-    const double levelled_at = number_at(row, levelled_column);
-    runs.levelled_at = std::isnan(levelled_at) || std::isnan(runs.levelled_at)
-                           ? std::numeric_limits<double>::quiet_NaN()
-                           : std::max(runs.levelled_at, levelled_at);
-    runs.duration = std::min(runs.duration, number_at(row, duration_column));
-  };
   // group values -> angle -> its runs; and the same for each seed of the group alone
-  std::map<std::vector<std::string>, std::map<double, AngleRuns>> groups;
-  std::map<std::vector<std::string>, std::map<double, std::map<double, AngleRuns>>> seed_groups;
+  std::map<std::vector<std::string>, AngleMap> groups;
+  std::map<std::vector<std::string>, std::map<double, AngleMap>> seed_groups;
   const auto seed_column = table.column(kSeedKey);
   for (const auto& row : table.rows) {
     std::vector<std::string> group;
@@ -161,87 +272,22 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
     const auto angle = parse_number(row[angle_column]);
     const double eta = number_at(row, eta_column);
     if (row[status_column] != "complete" || !angle || !std::isfinite(eta)) continue;
-    add_run(angles[*angle], eta, row);
+    const double levelled_at = number_at(row, levelled_column);
+    const double duration = number_at(row, duration_column);
+    add_run(angles[*angle], eta, levelled_at, duration);
     const auto seed = seed_column ? parse_number(row[*seed_column]) : std::nullopt;
-    if (seed) add_run(seed_groups[group][*seed][*angle], eta, row);
+    if (seed) add_run(seed_groups[group][*seed][*angle], eta, levelled_at, duration);
   }
-  const auto sweep_points = [](const std::map<double, AngleRuns>& angles) {
-    std::vector<metrics::SweepPoint> points;
-    for (const auto& [angle, runs] : angles) {
-      double sum = 0.0;
-      for (const double eta : runs.etas) sum += eta;
-      metrics::SweepPoint point{angle, sum / static_cast<double>(runs.etas.size())};
-      if (std::isfinite(runs.duration)) {
-        point.duration = runs.duration;
-        point.levelled_at = runs.levelled_at;
-      }
-      points.push_back(point);
-    }
-    return points;
-  };
 
-  CsvTable result;
-  result.header = group_keys;
-  for (const char* column :
-       {"theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note",
-        "theta_c_seed_mean_deg", "theta_c_seed_stderr_deg", "seeds_found"}) {
-    result.header.push_back(column);
-  }
-  CsvTable seed_rows;
-  seed_rows.header = group_keys;
-  for (const char* column :
-       {"seed", "theta_c_deg", "below_deg", "above_deg", "plateau_eta", "angles", "note"}) {
-    seed_rows.header.push_back(column);
-  }
-  out << "\ntheta_c: the angle where eta (mean over seeds) falls through half its low-angle "
-         "plateau\n";
+  CriticalAngleTables tables = critical_angle_tables(group_keys);
+  out << kCriticalAngleHeading;
   for (const auto& [group, angles] : groups) {
-    const std::vector<metrics::SweepPoint> points = sweep_points(angles);
-    const metrics::CriticalAngle critical = metrics::critical_angle(points);
-    std::vector<std::string> row = group;
-    char line[256];
-    if (critical.found) {
-      std::snprintf(line, sizeof line,
-                    "  %s: theta_c = %.4g deg (between %.4g and %.4g; plateau eta %.3g)",
-                    group_label(group_keys, group).c_str(), critical.angle, critical.below,
-                    critical.above, critical.plateau);
-      for (const double value :
-           {critical.angle, critical.below, critical.above, critical.plateau}) {
-        row.push_back(std::isnan(value) ? "nan" : scenarios::format_real(value));
-      }
-      row.push_back(std::to_string(points.size()));
-      row.push_back(critical.caution.empty() ? "" : "caution: " + critical.caution);
-    } else {
-      std::snprintf(line, sizeof line, "  %s: not found (%s)",
-                    group_label(group_keys, group).c_str(), critical.reason.c_str());
-      for (int i = 0; i < 4; ++i) row.push_back("nan");
-      row.push_back(std::to_string(points.size()));
-      row.push_back(critical.reason);
-    }
-    out << line << '\n';
-    if (critical.found && !critical.caution.empty()) {
-      out << "    caution: " << critical.caution << '\n';
-    }
-    const auto seeds = seed_groups.find(group);
-    if (seeds != seed_groups.end() && seeds->second.size() >= 2) {
-      std::vector<std::vector<metrics::SweepPoint>> per_seed;
-      for (const auto& [seed, seed_angles] : seeds->second) {
-        per_seed.push_back(sweep_points(seed_angles));
-      }
-      const metrics::SeedCriticalAngles spread = metrics::critical_angle_per_seed(per_seed);
-      report_seeds(group, seeds->second, spread, out, seed_rows);
-      for (const double value : {spread.mean, spread.standard_error}) {
-        row.push_back(std::isnan(value) ? "nan" : scenarios::format_real(value));
-      }
-      row.push_back(std::to_string(spread.found) + " of " + std::to_string(per_seed.size()));
-    } else {
-      row.insert(row.end(), {"nan", "nan", ""});
-    }
-    result.rows.push_back(std::move(row));
+    report_group(group_label(group_keys, group), group, angles, seed_groups[group], kSeedsCsvFile,
+                 out, tables);
   }
-  write_file_atomically(sweep_directory / "critical_angle.csv", csv_text(result));
-  if (!seed_rows.rows.empty()) {
-    write_file_atomically(sweep_directory / "critical_angle_seeds.csv", csv_text(seed_rows));
+  write_file_atomically(sweep_directory / "critical_angle.csv", csv_text(tables.groups));
+  if (!tables.seeds.rows.empty()) {
+    write_file_atomically(sweep_directory / kSeedsCsvFile, csv_text(tables.seeds));
   }
 }
 
@@ -515,6 +561,125 @@ CsvTable history_table(const std::vector<RunHistory>& histories) {
   return table;
 }
 
+/// A run's trap angle, and its resolved scenario less what may differ between the runs of one
+/// curve of eta against theta: the name, the seed, the angle and the apex placed from it, the run's
+/// length, the outputs and what is derived.
+struct CurveScenario {
+  std::optional<double> angle;  ///< none: no trap, or no resolved scenario
+  scenarios::SourceNode rest;
+};
+
+CurveScenario curve_scenario(const std::filesystem::path& run_directory) {
+  CurveScenario result;
+  scenarios::Diagnostics diagnostics;
+  auto tree = scenarios::read_yaml_file(run_directory / kResolvedScenarioFile, diagnostics);
+  if (!tree || !tree->is_map()) return result;
+  scenarios::SourceNode* trap = tree->find("trap");
+  if (trap && trap->is_map()) {
+    if (const scenarios::SourceNode* angle = trap->find("angle"); angle && angle->is_scalar()) {
+      result.angle = parse_number(angle->scalar);
+    }
+    trap->erase("angle");
+    trap->erase("apex");
+  }
+  if (scenarios::SourceNode* run = tree->find("run")) run->erase("duration");
+  for (const char* key : {"name", "seed", "output", "derived"}) tree->erase(key);
+  result.rest = std::move(*tree);
+  return result;
+}
+
+/// Where two trees first differ: its key path (empty when they do not), and the two values there.
+struct Difference {
+  std::string path;
+  std::string first, second;
+};
+
+Difference first_difference(const scenarios::SourceNode& a, const scenarios::SourceNode& b,
+                            const std::string& path) {
+  using Kind = scenarios::SourceNode::Kind;
+  const auto join = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
+  if (a.kind == Kind::map && b.kind == Kind::map) {
+    for (const auto& entry : a.entries) {
+      const scenarios::SourceNode* other = b.find(entry.key);
+      if (!other) return {join(entry.key), entry.value.describe(), "absent"};
+      Difference inner = first_difference(entry.value, *other, join(entry.key));
+      if (!inner.path.empty()) return inner;
+    }
+    for (const auto& entry : b.entries) {
+      if (!a.find(entry.key)) return {join(entry.key), "absent", entry.value.describe()};
+    }
+    return {};
+  }
+  if (a.kind == Kind::sequence && b.kind == Kind::sequence && a.items.size() == b.items.size()) {
+    for (std::size_t i = 0; i < a.items.size(); ++i) {
+      Difference inner =
+          first_difference(a.items[i], b.items[i], path + "[" + std::to_string(i) + "]");
+      if (!inner.path.empty()) return inner;
+    }
+    return {};
+  }
+  const std::string first = a.describe(), second = b.describe();
+  if (first == second) return {};
+  return {path.empty() ? "(the whole scenario)" : path, first, second};
+}
+
+/// theta_c from runs made one by one, as for a sweep over the angle and the seed: when the runs
+/// span two angles or more and are of one scenario but for those (curve_scenario), the complete
+/// ones (or, with --until, those that got that far) give theta_c of their seed-averaged curve and
+/// of each seed alone. Says why not when the runs are of different scenarios.
+void report_runs_critical_angle(const std::vector<RunHistory>& histories,
+                                const RunHistoryOptions& options, std::ostream& out) {
+  std::vector<CurveScenario> scenarios_of_runs;
+  std::set<double> angles_seen;
+  for (const RunHistory& history : histories) {
+    scenarios_of_runs.push_back(curve_scenario(history.directory));
+    if (scenarios_of_runs.back().angle) angles_seen.insert(*scenarios_of_runs.back().angle);
+  }
+  if (angles_seen.size() < 2) return;  // no curve of eta against theta
+  out << kCriticalAngleHeading;
+  for (std::size_t i = 0; i < histories.size(); ++i) {
+    if (!scenarios_of_runs[i].angle) {
+      out << "  not computed: " << histories[i].directory.string() << " has no trap angle in its "
+          << kResolvedScenarioFile << "\n";
+      return;
+    }
+    const Difference difference =
+        first_difference(scenarios_of_runs.front().rest, scenarios_of_runs[i].rest, "");
+    if (!difference.path.empty()) {
+      out << "  not computed: the runs differ in more than trap.angle and seed: " << difference.path
+          << " is " << difference.first << " in " << histories.front().directory.string() << " and "
+          << difference.second << " in " << histories[i].directory.string() << "\n";
+      return;
+    }
+  }
+  AngleMap angles;
+  std::map<double, AngleMap> seeds;
+  std::vector<std::string> left_out;
+  for (std::size_t i = 0; i < histories.size(); ++i) {
+    const RunHistory& history = histories[i];
+    const bool far_enough =
+        options.until_s > 0.0 ? history.reached_s >= options.until_s : history.status == "complete";
+    if (!far_enough || !history.has_eta || history.rows == 0) {
+      left_out.push_back(history.directory.string());
+      continue;
+    }
+    const double angle = *scenarios_of_runs[i].angle;
+    const double seed = static_cast<double>(history.record.seed);
+    const double duration = history.half_to;
+    add_run(angles[angle], history.eta_stats.mean, history.eta_stats.time_to_90, duration);
+    add_run(seeds[seed][angle], history.eta_stats.mean, history.eta_stats.time_to_90, duration);
+  }
+  if (!left_out.empty()) {
+    out << "  left out, " << (options.until_s > 0.0 ? "not as far as --until" : "not complete")
+        << ":";
+    for (const std::string& directory : left_out) out << ' ' << directory;
+    out << '\n';
+  }
+  if (angles.empty()) return;
+  CriticalAngleTables tables = critical_angle_tables({});
+  report_group("these runs", {}, angles, seeds, nullptr, out, tables);
+}
+
 }  // namespace
 
 int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
@@ -546,6 +711,7 @@ int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
     histories.push_back(read_history(directory, options));
     print_history(histories.back(), options, out);
   }
+  report_runs_critical_angle(histories, options, out);
   if (!options.csv.empty()) {
     write_file_atomically(options.csv, csv_text(history_table(histories)));
     out << "wrote " << options.csv.string() << '\n';

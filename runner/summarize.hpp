@@ -31,8 +31,10 @@ struct RunHistoryOptions {
 
 /// `rodsort summarize RUN_DIR...`: for each run, how far it got, eta and eta_trap over the last
 /// half, when eta first reached 90% of that, their means per window, and its nucleation attempts
-/// (metrics::nucleation_attempts); with `options.csv`, the same as a table of one row per run. Exit
-/// 2 for a directory that holds no run or a CSV file whose folder does not exist.
+/// (metrics::nucleation_attempts); with `options.csv`, the same as a table of one row per run.
+/// When the runs are of one scenario at two angles or more (seeds aside), theta_c as for a sweep
+/// over the angle and the seed. Exit 2 for a directory that holds no run or a CSV file whose folder
+/// does not exist.
 int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
                    const RunHistoryOptions& options, std::ostream& out, std::ostream& err);
 

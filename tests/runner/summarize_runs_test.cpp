@@ -203,3 +203,97 @@ TEST_CASE("rodsort summarize takes one sweep directory or run directories, not b
   CHECK(sweep_csv.status == kExitUsage);
   CHECK_THAT(sweep_csv.err, Catch::Contains("--csv is for run directories"));
 }
+
+namespace {
+
+/// A complete 100 s run at `angle` with eta constant at `eta` (eta_trap 0.9 of it), and a resolved
+/// scenario that differs from its neighbours' only where asked.
+void write_curve_run(const std::filesystem::path& directory, int seed, double angle, double eta,
+                     const std::string& kick_eps = "0.01") {
+  std::filesystem::create_directories(directory);
+  RunRecord record;
+  record.name = "curve";
+  record.seed = seed;
+  record.status = RunStatus::kComplete;
+  record.rods = 40;
+  record.dt_s = 1e-4;
+  record.duration_s = record.simulated_s = 100.0;
+  record.steps = record.total_steps = 1000000;
+  record.cpu_s = 200.0;
+  write_file_atomically(directory / kRunRecordFile, to_json(record));
+  std::ofstream metrics(directory / kMetricsCsvFile);
+  metrics << "t,eta,eta_trap,n_rods\n";
+  for (int k = 1; k <= 1000; ++k) metrics << 0.1 * k << ',' << eta << ',' << 0.9 * eta << ",40\n";
+  // What a resolved scenario holds that may differ along a curve: name, seed, the angle and the
+  // apex placed from it, the length, the outputs and what is derived.
+  std::ofstream(directory / kResolvedScenarioFile)
+      << "name: curve\nseed: " << seed
+      << "\nspecies:\n  - name: A\n    noise:\n      kick_eps: " << kick_eps
+      << "\ntrap:\n  angle: " << angle << "\n  apex: [" << angle / 10
+      << ", 1]\n  arm_length: 45\nrun:\n  duration: 100\n  dt: 1e-4\noutput:\n  rods_format: "
+      << (seed == 1 ? "csv" : "h5md") << "\nderived:\n  rods: " << 400 - angle << "\n";
+}
+
+}  // namespace
+
+TEST_CASE("summarize gives theta_c of runs made one by one at several angles",
+          "[runner][summarize]") {
+  TempDirectory scratch;
+  // Seed 1 drops between 120 and 130 degrees, seed 2 between 130 and 140; plateau 0.8.
+  const std::vector<double> angles = {100, 110, 120, 130, 140};
+  const std::vector<double> seed_1 = {0.8, 0.8, 0.8, 0.2, 0.0}, seed_2 = {0.8, 0.8, 0.8, 0.8, 0.0};
+  std::vector<std::filesystem::path> runs;
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    for (const int seed : {1, 2}) {
+      runs.push_back(scratch / ("s" + std::to_string(seed) + "-" + std::to_string(i)));
+      write_curve_run(runs.back(), seed, angles[i], (seed == 1 ? seed_1 : seed_2)[i]);
+    }
+  }
+  std::ostringstream out, err;
+  REQUIRE(summarize_runs(runs, RunHistoryOptions{}, out, err) == kExitOk);
+  INFO(out.str());
+  // The mean curve, 0.8 0.8 0.8 0.5 0: through 0.4 at 130 + 0.1 / 0.5 * 10 = 132; each seed
+  // alone at 120 + 0.4 / 0.6 * 10 = 126.67 and 130 + 0.4 / 0.8 * 10 = 135.
+  CHECK_THAT(
+      out.str(),
+      Catch::Contains("these runs: theta_c = 132 deg (between 130 and 140; plateau eta 0.8)"));
+  CHECK_THAT(out.str(), Catch::Contains("each seed alone: 1: 126.7, 2: 135\n"));
+  CHECK_THAT(out.str(), Catch::Contains("theta_c = 130.8 +- 4.2 deg (mean +- standard error over "
+                                        "the 2 of 2 seeds that have one; standard deviation 5.9)"));
+
+  // A run that has not finished is left out, and said to be; --until takes it back in.
+  RunRecord stopped = *read_run_record(runs[6]);  // seed 1 at 130 degrees
+  stopped.status = RunStatus::kInterrupted;
+  write_file_atomically(runs[6] / kRunRecordFile, to_json(stopped));
+  std::ostringstream out_stopped, err_stopped;
+  REQUIRE(summarize_runs(runs, RunHistoryOptions{}, out_stopped, err_stopped) == kExitOk);
+  CHECK_THAT(out_stopped.str(), Catch::Contains("left out, not complete: " + runs[6].string()));
+  // Without it seed 1 has four angles, too few alone, and the mean curve is seed 2's at 130.
+  CHECK_THAT(out_stopped.str(), Catch::Contains("these runs: theta_c = 135 deg"));
+  CHECK_THAT(out_stopped.str(), Catch::Contains("each seed alone: 1: none, 2: 135\n"));
+  CHECK_THAT(out_stopped.str(), Catch::Contains("      seed 1: a critical angle needs at least 5 "
+                                                "angles"));
+  CHECK_THAT(out_stopped.str(), Catch::Contains("(why not: above)"));
+  RunHistoryOptions until;
+  until.until_s = 80.0;
+  std::ostringstream out_until, err_until;
+  REQUIRE(summarize_runs(runs, until, out_until, err_until) == kExitOk);
+  CHECK_THAT(out_until.str(), Catch::Contains("each seed alone: 1: 126.7, 2: 135\n"));
+
+  // Runs of another noise are not one curve: no theta_c, and the key that differs is named.
+  write_curve_run(scratch / "noisier", 1, 150, 0.0, "0.02");
+  runs.push_back(scratch / "noisier");
+  std::ostringstream out_mixed, err_mixed;
+  REQUIRE(summarize_runs(runs, RunHistoryOptions{}, out_mixed, err_mixed) == kExitOk);
+  CHECK_THAT(out_mixed.str(),
+             Catch::Contains("not computed: the runs differ in more than "
+                             "trap.angle and seed: species[0].noise.kick_eps is "
+                             "0.01 in " +
+                             runs[0].string() + " and 0.02 in " + (scratch / "noisier").string()));
+  CHECK_THAT(out_mixed.str(), !Catch::Contains("these runs:"));
+
+  // Runs at one angle make no curve: nothing is said of theta_c.
+  std::ostringstream out_one, err_one;
+  REQUIRE(summarize_runs({runs[0], runs[1]}, RunHistoryOptions{}, out_one, err_one) == kExitOk);
+  CHECK_THAT(out_one.str(), !Catch::Contains("theta_c"));
+}

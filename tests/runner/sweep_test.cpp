@@ -1,5 +1,6 @@
 #include "runner/sweep.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <sstream>
 #include <string>
@@ -183,6 +184,23 @@ TEST_CASE("summarize gives theta_c of each seed alone beside that of the seeds' 
   REQUIRE(pooled.rows.size() == 1);
   CHECK(pooled.rows[0][*pooled.column("seeds_found")] == "0 of 2");
   CHECK(pooled.rows[0][*pooled.column("theta_c_seed_stderr_deg")] == "nan");
+
+  // The same points given as run directories, as if made one by one: one curve (their names and
+  // apexes differ), the same verdict and the same reason.
+  std::vector<std::filesystem::path> points;
+  for (const auto& entry : std::filesystem::directory_iterator(sweep)) {
+    if (std::filesystem::exists(entry.path() / kRunRecordFile)) points.push_back(entry.path());
+  }
+  std::sort(points.begin(), points.end());
+  REQUIRE(points.size() == 10);
+  std::ostringstream as_runs;
+  REQUIRE(summarize_runs(points, RunHistoryOptions{}, as_runs, err) == kExitOk);
+  INFO(as_runs.str());
+  CHECK_THAT(as_runs.str(), Catch::Contains("these runs: not found (" +
+                                            pooled.rows[0][*pooled.column("note")] + ")"));
+  CHECK_THAT(as_runs.str(),
+             Catch::Contains("each seed alone: 1: none, 2: none\n      seeds 1, 2: " +
+                             seeds.rows[0][6] + "\n"));
 }
 
 TEST_CASE("a sweep with a bad point is refused before anything is written", "[runner][sweep]") {
