@@ -588,45 +588,82 @@ CurveScenario curve_scenario(const std::filesystem::path& run_directory) {
   return result;
 }
 
-/// Where two trees first differ: its key path (empty when they do not), and the two values there.
-struct Difference {
-  std::string path;
-  std::string first, second;
+/// The leaves of a tree in file order: each one's key path ("species[0].noise.kick_eps") and its
+/// value as it reads in a message. An empty map or sequence is a leaf.
+void collect_leaves(const scenarios::SourceNode& node, const std::string& path,
+                    std::vector<std::pair<std::string, std::string>>& leaves) {
+  if (node.is_map() && !node.entries.empty()) {
+    for (const auto& entry : node.entries) {
+      collect_leaves(entry.value, path.empty() ? entry.key : path + "." + entry.key, leaves);
+    }
+  } else if (node.is_sequence() && !node.items.empty()) {
+    for (std::size_t i = 0; i < node.items.size(); ++i) {
+      collect_leaves(node.items[i], path + "[" + std::to_string(i) + "]", leaves);
+    }
+  } else {
+    leaves.emplace_back(path.empty() ? "(the whole scenario)" : path, node.describe());
+  }
+}
+
+/// The keys whose values are not the same in every run, in the order first met, and each run's
+/// value of each ("absent" where a run lacks the key).
+struct Differences {
+  std::vector<std::string> keys;
+  std::vector<std::vector<std::string>> values;  ///< per run, per key
 };
 
-Difference first_difference(const scenarios::SourceNode& a, const scenarios::SourceNode& b,
-                            const std::string& path) {
-  using Kind = scenarios::SourceNode::Kind;
-  const auto join = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
-  if (a.kind == Kind::map && b.kind == Kind::map) {
-    for (const auto& entry : a.entries) {
-      const scenarios::SourceNode* other = b.find(entry.key);
-      if (!other) return {join(entry.key), entry.value.describe(), "absent"};
-      Difference inner = first_difference(entry.value, *other, join(entry.key));
-      if (!inner.path.empty()) return inner;
+Differences differences(const std::vector<CurveScenario>& scenarios_of_runs) {
+  std::vector<std::string> order;
+  std::vector<std::map<std::string, std::string>> runs;
+  for (const CurveScenario& scenario : scenarios_of_runs) {
+    std::vector<std::pair<std::string, std::string>> leaves;
+    collect_leaves(scenario.rest, "", leaves);
+    runs.emplace_back();
+    for (auto& [key, value] : leaves) {
+      if (std::find(order.begin(), order.end(), key) == order.end()) order.push_back(key);
+      runs.back().emplace(std::move(key), std::move(value));
     }
-    for (const auto& entry : b.entries) {
-      if (!a.find(entry.key)) return {join(entry.key), "absent", entry.value.describe()};
-    }
-    return {};
   }
-  if (a.kind == Kind::sequence && b.kind == Kind::sequence && a.items.size() == b.items.size()) {
-    for (std::size_t i = 0; i < a.items.size(); ++i) {
-      Difference inner =
-          first_difference(a.items[i], b.items[i], path + "[" + std::to_string(i) + "]");
-      if (!inner.path.empty()) return inner;
+  const auto value_of = [](const std::map<std::string, std::string>& run, const std::string& key) {
+    const auto found = run.find(key);
+    return found == run.end() ? std::string("absent") : found->second;
+  };
+  Differences result;
+  for (const std::string& key : order) {
+    const std::string first = value_of(runs.front(), key);
+    if (std::any_of(runs.begin(), runs.end(),
+                    [&](const auto& run) { return value_of(run, key) != first; })) {
+      result.keys.push_back(key);
     }
-    return {};
   }
-  const std::string first = a.describe(), second = b.describe();
-  if (first == second) return {};
-  return {path.empty() ? "(the whole scenario)" : path, first, second};
+  for (const auto& run : runs) {
+    std::vector<std::string> values;
+    for (const std::string& key : result.keys) values.push_back(value_of(run, key));
+    result.values.push_back(std::move(values));
+  }
+  return result;
 }
+
+/// Orders groups by their values, numerically where both values are numbers.
+bool values_before(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
+    if (a[k] == b[k]) continue;
+    const std::optional<double> x = parse_number(a[k]), y = parse_number(b[k]);
+    if (x && y && *x != *y) return *x < *y;
+    return a[k] < b[k];
+  }
+  return a.size() < b.size();
+}
+
+/// Runs may differ in this many keys besides those of a curve and still be grouped by them.
+constexpr std::size_t kMaxGroupKeys = 3;
 
 /// theta_c from runs made one by one, as for a sweep over the angle and the seed: when the runs
 /// span two angles or more and are of one scenario but for those (curve_scenario), the complete
 /// ones (or, with --until, those that got that far) give theta_c of their seed-averaged curve and
-/// of each seed alone. Says why not when the runs are of different scenarios.
+/// of each seed alone. Runs that differ elsewhere in a few keys (another noise, say) are grouped by
+/// those keys' values, one curve per group, as a sweep over them would be; runs that differ in
+/// more are not compared, and the first key where they differ is named.
 void report_runs_critical_angle(const std::vector<RunHistory>& histories,
                                 const RunHistoryOptions& options, std::ostream& out) {
   std::vector<CurveScenario> scenarios_of_runs;
@@ -643,17 +680,23 @@ void report_runs_critical_angle(const std::vector<RunHistory>& histories,
           << kResolvedScenarioFile << "\n";
       return;
     }
-    const Difference difference =
-        first_difference(scenarios_of_runs.front().rest, scenarios_of_runs[i].rest, "");
-    if (!difference.path.empty()) {
-      out << "  not computed: the runs differ in more than trap.angle and seed: " << difference.path
-          << " is " << difference.first << " in " << histories.front().directory.string() << " and "
-          << difference.second << " in " << histories[i].directory.string() << "\n";
-      return;
-    }
   }
-  AngleMap angles;
-  std::map<double, AngleMap> seeds;
+  const Differences differ = differences(scenarios_of_runs);
+  if (differ.keys.size() > kMaxGroupKeys) {
+    std::size_t other = 1;
+    while (differ.values[other][0] == differ.values[0][0]) ++other;
+    out << "  not computed: the runs differ in " << differ.keys.size()
+        << " keys besides trap.angle and seed (runs are grouped by at most " << kMaxGroupKeys
+        << "); the first: " << differ.keys[0] << " is " << differ.values[0][0] << " in "
+        << histories.front().directory.string() << " and " << differ.values[other][0] << " in "
+        << histories[other].directory.string() << "\n";
+    return;
+  }
+  struct Group {
+    AngleMap angles;
+    std::map<double, AngleMap> seeds;
+  };
+  std::vector<std::pair<std::vector<std::string>, Group>> groups;
   std::vector<std::string> left_out;
   for (std::size_t i = 0; i < histories.size(); ++i) {
     const RunHistory& history = histories[i];
@@ -663,11 +706,16 @@ void report_runs_critical_angle(const std::vector<RunHistory>& histories,
       left_out.push_back(history.directory.string());
       continue;
     }
+    auto group = std::find_if(groups.begin(), groups.end(),
+                              [&](const auto& g) { return g.first == differ.values[i]; });
+    if (group == groups.end()) group = groups.insert(groups.end(), {differ.values[i], Group{}});
     const double angle = *scenarios_of_runs[i].angle;
     const double seed = static_cast<double>(history.record.seed);
     const double duration = history.half_to;
-    add_run(angles[angle], history.eta_stats.mean, history.eta_stats.time_to_90, duration);
-    add_run(seeds[seed][angle], history.eta_stats.mean, history.eta_stats.time_to_90, duration);
+    add_run(group->second.angles[angle], history.eta_stats.mean, history.eta_stats.time_to_90,
+            duration);
+    add_run(group->second.seeds[seed][angle], history.eta_stats.mean, history.eta_stats.time_to_90,
+            duration);
   }
   if (!left_out.empty()) {
     out << "  left out, " << (options.until_s > 0.0 ? "not as far as --until" : "not complete")
@@ -675,9 +723,21 @@ void report_runs_critical_angle(const std::vector<RunHistory>& histories,
     for (const std::string& directory : left_out) out << ' ' << directory;
     out << '\n';
   }
-  if (angles.empty()) return;
-  CriticalAngleTables tables = critical_angle_tables({});
-  report_group("these runs", {}, angles, seeds, nullptr, out, tables);
+  if (groups.empty()) return;
+  if (!differ.keys.empty()) {
+    out << "  one curve per value of";
+    for (std::size_t k = 0; k < differ.keys.size(); ++k) {
+      out << (k == 0 ? " " : ", ") << differ.keys[k];
+    }
+    out << " (the runs differ there)\n";
+  }
+  std::sort(groups.begin(), groups.end(),
+            [](const auto& a, const auto& b) { return values_before(a.first, b.first); });
+  CriticalAngleTables tables = critical_angle_tables(differ.keys);
+  for (const auto& [values, group] : groups) {
+    report_group(differ.keys.empty() ? "these runs" : group_label(differ.keys, values), values,
+                 group.angles, group.seeds, nullptr, out, tables);
+  }
 }
 
 }  // namespace

@@ -280,16 +280,45 @@ TEST_CASE("summarize gives theta_c of runs made one by one at several angles",
   REQUIRE(summarize_runs(runs, until, out_until, err_until) == kExitOk);
   CHECK_THAT(out_until.str(), Catch::Contains("each seed alone: 1: 126.7, 2: 135\n"));
 
-  // Runs of another noise are not one curve: no theta_c, and the key that differs is named.
-  write_curve_run(scratch / "noisier", 1, 150, 0.0, "0.02");
-  runs.push_back(scratch / "noisier");
+  // Runs of another noise make a curve of their own, as in a sweep over the noise: one theta_c
+  // per noise, in the noise's order. At 0.02 both seeds hold 0.8 to 120 degrees and 0 beyond:
+  // through 0.4 at 125.
+  std::vector<std::filesystem::path> noises;
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    for (const int seed : {1, 2}) {
+      noises.push_back(scratch / ("n" + std::to_string(seed) + "-" + std::to_string(i)));
+      write_curve_run(noises.back(), seed, angles[i], angles[i] <= 120 ? 0.8 : 0.0, "0.02");
+    }
+  }
+  noises.insert(noises.end(), runs.begin(), runs.end());
+  std::ostringstream out_noises, err_noises;
+  REQUIRE(summarize_runs(noises, RunHistoryOptions{}, out_noises, err_noises) == kExitOk);
+  const std::string by_noise = out_noises.str();
+  INFO(by_noise);
+  CHECK_THAT(by_noise, Catch::Contains("  one curve per value of species[0].noise.kick_eps (the "
+                                       "runs differ there)\n"
+                                       "  species[0].noise.kick_eps=0.01: theta_c = 135 deg"));
+  CHECK_THAT(by_noise, Catch::Contains("left out, not complete: " + runs[6].string()));
+  CHECK_THAT(by_noise, Catch::Contains("species[0].noise.kick_eps=0.02: theta_c = 125 deg (between "
+                                       "120 and 130; plateau eta 0.8)\n    each seed alone: 1: "
+                                       "125, 2: 125\n"));
+  CHECK(by_noise.find("kick_eps=0.01:") < by_noise.find("kick_eps=0.02:"));
+  CHECK_THAT(by_noise, !Catch::Contains("these runs:"));
+
+  // Runs that differ in more than three keys are not compared; the first key is named.
+  write_curve_run(scratch / "other", 1, 150, 0.0);
+  std::ofstream(scratch / "other" / kResolvedScenarioFile)
+      << "name: curve\nseed: 1\nspecies:\n  - name: B\n    noise:\n      kick_eps: 0.03"
+      << "\ntrap:\n  angle: 150\n  apex: [15, 1]\n  arm_length: 60\nrun:\n  duration: 100\n"
+      << "  dt: 2e-4\n";
+  runs.push_back(scratch / "other");
   std::ostringstream out_mixed, err_mixed;
   REQUIRE(summarize_runs(runs, RunHistoryOptions{}, out_mixed, err_mixed) == kExitOk);
-  CHECK_THAT(out_mixed.str(),
-             Catch::Contains("not computed: the runs differ in more than "
-                             "trap.angle and seed: species[0].noise.kick_eps is "
-                             "0.01 in " +
-                             runs[0].string() + " and 0.02 in " + (scratch / "noisier").string()));
+  CHECK_THAT(
+      out_mixed.str(),
+      Catch::Contains("not computed: the runs differ in 4 keys besides trap.angle and seed "
+                      "(runs are grouped by at most 3); the first: species[0].name is A in " +
+                      runs[0].string() + " and B in " + (scratch / "other").string()));
   CHECK_THAT(out_mixed.str(), !Catch::Contains("these runs:"));
 
   // Runs at one angle make no curve: nothing is said of theta_c.
