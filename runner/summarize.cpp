@@ -658,6 +658,70 @@ bool values_before(const std::vector<std::string>& a, const std::vector<std::str
 /// Runs may differ in this many keys besides those of a curve and still be grouped by them.
 constexpr std::size_t kMaxGroupKeys = 3;
 
+/// Runs made one by one read as the points of curves of eta against theta: one curve, or one per
+/// group of values of the few keys where their scenarios differ beyond those of a curve
+/// (curve_scenario).
+struct RunsCurve {
+  std::string not_computed;                      ///< why the runs make no curve; empty if they do
+  std::vector<std::string> keys;                 ///< where their scenarios differ
+  std::vector<std::vector<std::string>> values;  ///< per run, per key
+  std::vector<double> angles;                    ///< per run
+  std::vector<bool> counted;  ///< per run: complete (with --until, as far as that)
+};
+
+/// std::nullopt when the runs span fewer than two angles: they make no curve, and nothing is said.
+std::optional<RunsCurve> runs_curve(const std::vector<RunHistory>& histories,
+                                    const RunHistoryOptions& options) {
+  std::vector<CurveScenario> scenarios_of_runs;
+  std::set<double> angles_seen;
+  for (const RunHistory& history : histories) {
+    scenarios_of_runs.push_back(curve_scenario(history.directory));
+    if (scenarios_of_runs.back().angle) angles_seen.insert(*scenarios_of_runs.back().angle);
+  }
+  if (angles_seen.size() < 2) return std::nullopt;
+  RunsCurve curve;
+  for (std::size_t i = 0; i < histories.size(); ++i) {
+    if (!scenarios_of_runs[i].angle) {
+      curve.not_computed =
+          histories[i].directory.string() + " has no trap angle in its " + kResolvedScenarioFile;
+      return curve;
+    }
+    curve.angles.push_back(*scenarios_of_runs[i].angle);
+  }
+  Differences differ = differences(scenarios_of_runs);
+  if (differ.keys.size() > kMaxGroupKeys) {
+    std::size_t other = 1;
+    while (differ.values[other][0] == differ.values[0][0]) ++other;
+    curve.not_computed = "the runs differ in " + std::to_string(differ.keys.size()) +
+                         " keys besides trap.angle and seed (runs are grouped by at most " +
+                         std::to_string(kMaxGroupKeys) + "); the first: " + differ.keys[0] +
+                         " is " + differ.values[0][0] + " in " +
+                         histories.front().directory.string() + " and " + differ.values[other][0] +
+                         " in " + histories[other].directory.string();
+    return curve;
+  }
+  curve.keys = std::move(differ.keys);
+  curve.values = std::move(differ.values);
+  for (const RunHistory& history : histories) {
+    const bool far_enough =
+        options.until_s > 0.0 ? history.reached_s >= options.until_s : history.status == "complete";
+    curve.counted.push_back(far_enough && history.has_eta && history.rows > 0);
+  }
+  return curve;
+}
+
+/// The runs a curve leaves out, on one line: "  left out, not complete: DIR DIR".
+std::string left_out_line(const std::vector<RunHistory>& histories, const RunsCurve& curve,
+                          const RunHistoryOptions& options) {
+  std::string line;
+  for (std::size_t i = 0; i < histories.size(); ++i) {
+    if (!curve.counted[i]) line += " " + histories[i].directory.string();
+  }
+  if (line.empty()) return line;
+  return std::string("left out, ") +
+         (options.until_s > 0.0 ? "not as far as --until" : "not complete") + ":" + line;
+}
+
 /// theta_c from runs made one by one, as for a sweep over the angle and the seed: when the runs
 /// span two angles or more and are of one scenario but for those (curve_scenario), the complete
 /// ones (or, with --until, those that got that far) give theta_c of their seed-averaged curve and
@@ -666,30 +730,11 @@ constexpr std::size_t kMaxGroupKeys = 3;
 /// more are not compared, and the first key where they differ is named.
 void report_runs_critical_angle(const std::vector<RunHistory>& histories,
                                 const RunHistoryOptions& options, std::ostream& out) {
-  std::vector<CurveScenario> scenarios_of_runs;
-  std::set<double> angles_seen;
-  for (const RunHistory& history : histories) {
-    scenarios_of_runs.push_back(curve_scenario(history.directory));
-    if (scenarios_of_runs.back().angle) angles_seen.insert(*scenarios_of_runs.back().angle);
-  }
-  if (angles_seen.size() < 2) return;  // no curve of eta against theta
+  const std::optional<RunsCurve> curve = runs_curve(histories, options);
+  if (!curve) return;
   out << kCriticalAngleHeading;
-  for (std::size_t i = 0; i < histories.size(); ++i) {
-    if (!scenarios_of_runs[i].angle) {
-      out << "  not computed: " << histories[i].directory.string() << " has no trap angle in its "
-          << kResolvedScenarioFile << "\n";
-      return;
-    }
-  }
-  const Differences differ = differences(scenarios_of_runs);
-  if (differ.keys.size() > kMaxGroupKeys) {
-    std::size_t other = 1;
-    while (differ.values[other][0] == differ.values[0][0]) ++other;
-    out << "  not computed: the runs differ in " << differ.keys.size()
-        << " keys besides trap.angle and seed (runs are grouped by at most " << kMaxGroupKeys
-        << "); the first: " << differ.keys[0] << " is " << differ.values[0][0] << " in "
-        << histories.front().directory.string() << " and " << differ.values[other][0] << " in "
-        << histories[other].directory.string() << "\n";
+  if (!curve->not_computed.empty()) {
+    out << "  not computed: " << curve->not_computed << "\n";
     return;
   }
   struct Group {
@@ -697,50 +742,97 @@ void report_runs_critical_angle(const std::vector<RunHistory>& histories,
     std::map<double, AngleMap> seeds;
   };
   std::vector<std::pair<std::vector<std::string>, Group>> groups;
-  std::vector<std::string> left_out;
   for (std::size_t i = 0; i < histories.size(); ++i) {
+    if (!curve->counted[i]) continue;
     const RunHistory& history = histories[i];
-    const bool far_enough =
-        options.until_s > 0.0 ? history.reached_s >= options.until_s : history.status == "complete";
-    if (!far_enough || !history.has_eta || history.rows == 0) {
-      left_out.push_back(history.directory.string());
-      continue;
-    }
     auto group = std::find_if(groups.begin(), groups.end(),
-                              [&](const auto& g) { return g.first == differ.values[i]; });
-    if (group == groups.end()) group = groups.insert(groups.end(), {differ.values[i], Group{}});
-    const double angle = *scenarios_of_runs[i].angle;
+                              [&](const auto& g) { return g.first == curve->values[i]; });
+    if (group == groups.end()) group = groups.insert(groups.end(), {curve->values[i], Group{}});
     const double seed = static_cast<double>(history.record.seed);
     const double duration = history.half_to;
-    add_run(group->second.angles[angle], history.eta_stats.mean, history.eta_stats.time_to_90,
-            duration);
-    add_run(group->second.seeds[seed][angle], history.eta_stats.mean, history.eta_stats.time_to_90,
-            duration);
+    add_run(group->second.angles[curve->angles[i]], history.eta_stats.mean,
+            history.eta_stats.time_to_90, duration);
+    add_run(group->second.seeds[seed][curve->angles[i]], history.eta_stats.mean,
+            history.eta_stats.time_to_90, duration);
   }
-  if (!left_out.empty()) {
-    out << "  left out, " << (options.until_s > 0.0 ? "not as far as --until" : "not complete")
-        << ":";
-    for (const std::string& directory : left_out) out << ' ' << directory;
-    out << '\n';
+  if (const std::string line = left_out_line(histories, *curve, options); !line.empty()) {
+    out << "  " << line << '\n';
   }
   if (groups.empty()) return;
-  if (!differ.keys.empty()) {
+  if (!curve->keys.empty()) {
     out << "  one curve per value of";
-    for (std::size_t k = 0; k < differ.keys.size(); ++k) {
-      out << (k == 0 ? " " : ", ") << differ.keys[k];
+    for (std::size_t k = 0; k < curve->keys.size(); ++k) {
+      out << (k == 0 ? " " : ", ") << curve->keys[k];
     }
     out << " (the runs differ there)\n";
   }
   std::sort(groups.begin(), groups.end(),
             [](const auto& a, const auto& b) { return values_before(a.first, b.first); });
-  CriticalAngleTables tables = critical_angle_tables(differ.keys);
+  CriticalAngleTables tables = critical_angle_tables(curve->keys);
   for (const auto& [values, group] : groups) {
-    report_group(differ.keys.empty() ? "these runs" : group_label(differ.keys, values), values,
+    report_group(curve->keys.empty() ? "these runs" : group_label(curve->keys, values), values,
                  group.angles, group.seeds, nullptr, out, tables);
   }
 }
 
+/// Exit 2 with a message for a directory that holds no run.
+bool check_run_directories(const std::vector<std::filesystem::path>& run_directories,
+                           std::ostream& err) {
+  for (const auto& directory : run_directories) {
+    if (!read_run_record(directory) || !std::filesystem::exists(directory / kMetricsCsvFile)) {
+      err << "rodsort: " << directory.string()
+          << " is neither a sweep directory (sweep.csv) nor a run directory (run.json and "
+          << kMetricsCsvFile << ")\n";
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
+
+std::optional<CsvTable> runs_sweep_table(const std::vector<std::filesystem::path>& run_directories,
+                                         const RunHistoryOptions& options, std::ostream& err) {
+  if (!check_run_directories(run_directories, err)) return std::nullopt;
+  std::vector<RunHistory> histories;
+  for (const auto& directory : run_directories) {
+    histories.push_back(read_history(directory, options));
+  }
+  const std::optional<RunsCurve> curve = runs_curve(histories, options);
+  if (!curve) {
+    err << "rodsort: a curve of eta against theta needs runs at two trap angles or more\n";
+    return std::nullopt;
+  }
+  if (!curve->not_computed.empty()) {
+    err << "rodsort: no curve of eta against theta: " << curve->not_computed << "\n";
+    return std::nullopt;
+  }
+  CsvTable table;
+  table.header = {kSweepPointColumn, kAngleKey};
+  table.header.insert(table.header.end(), curve->keys.begin(), curve->keys.end());
+  table.header.insert(table.header.end(), {kSeedKey, kSweepStatusColumn, "eta_mean",
+                                           "eta_time_to_90_s", "simulated_s"});
+  for (std::size_t i = 0; i < histories.size(); ++i) {
+    if (!curve->counted[i]) continue;
+    const RunHistory& history = histories[i];
+    std::vector<std::string> row = {history.directory.filename().string(),
+                                    scenarios::format_real(curve->angles[i])};
+    row.insert(row.end(), curve->values[i].begin(), curve->values[i].end());
+    row.insert(row.end(),
+               {std::to_string(history.record.seed), "complete", csv_number(history.eta_stats.mean),
+                csv_number(history.eta_stats.time_to_90), csv_number(history.half_to)});
+    table.rows.push_back(std::move(row));
+  }
+  if (const std::string line = left_out_line(histories, *curve, options); !line.empty()) {
+    err << "note: " << line << '\n';
+  }
+  if (table.rows.empty()) {
+    err << "rodsort: no run is " << (options.until_s > 0.0 ? "as far as --until" : "complete")
+        << ": no curve of eta against theta\n";
+    return std::nullopt;
+  }
+  return table;
+}
 
 int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
                    const RunHistoryOptions& options, std::ostream& out, std::ostream& err) {
@@ -749,14 +841,7 @@ int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
         << options.fall << "\n";
     return kExitUsage;
   }
-  for (const auto& directory : run_directories) {
-    if (!read_run_record(directory) || !std::filesystem::exists(directory / kMetricsCsvFile)) {
-      err << "rodsort: " << directory.string()
-          << " is neither a sweep directory (sweep.csv) nor a run directory (run.json and "
-          << kMetricsCsvFile << ")\n";
-      return kExitUsage;
-    }
-  }
+  if (!check_run_directories(run_directories, err)) return kExitUsage;
   if (!options.csv.empty()) {
     const std::filesystem::path folder = options.csv.parent_path();
     if (std::filesystem::is_directory(options.csv) ||

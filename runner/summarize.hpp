@@ -6,7 +6,10 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <vector>
+
+#include "runner/csv_table.hpp"
 
 namespace rodsort::runner {
 
@@ -37,5 +40,14 @@ struct RunHistoryOptions {
 /// does not exist.
 int summarize_runs(const std::vector<std::filesystem::path>& run_directories,
                    const RunHistoryOptions& options, std::ostream& out, std::ostream& err);
+
+/// For `rodsort plot RUN_DIR... --what eta-theta`: runs made one by one as the rows of a sweep
+/// table (sweep.csv's columns point, trap.angle, the keys where their scenarios differ as
+/// `summarize_runs` groups them, seed, status, eta_mean, eta_time_to_90_s, simulated_s), eta read
+/// over the last half of each run up to `options.until_s`. Only the runs that count are rows; those
+/// left out are named on `err`. std::nullopt, with the reason on `err`, when the directories hold
+/// no runs or the runs make no curve (one angle, no run complete, or scenarios too different).
+std::optional<CsvTable> runs_sweep_table(const std::vector<std::filesystem::path>& run_directories,
+                                         const RunHistoryOptions& options, std::ostream& err);
 
 }  // namespace rodsort::runner

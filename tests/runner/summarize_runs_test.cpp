@@ -1,7 +1,9 @@
 // `rodsort summarize RUN_DIR...`: eta(t) of runs in windows, and their nucleation attempts.
 
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -325,4 +327,80 @@ TEST_CASE("summarize gives theta_c of runs made one by one at several angles",
   std::ostringstream out_one, err_one;
   REQUIRE(summarize_runs({runs[0], runs[1]}, RunHistoryOptions{}, out_one, err_one) == kExitOk);
   CHECK_THAT(out_one.str(), !Catch::Contains("theta_c"));
+}
+
+TEST_CASE("Runs made one by one read as a sweep's points, one curve per noise",
+          "[runner][summarize]") {
+  TempDirectory scratch;
+  // eps = 0.01 drops between 120 and 130 degrees (seed 1) and 130 and 140 (seed 2); eps = 0.02
+  // between 120 and 130 in both seeds; seed 2 at 0.02 and 140 degrees has not finished.
+  const std::vector<double> angles = {100, 110, 120, 130, 140};
+  const std::vector<double> seed_1 = {0.8, 0.8, 0.8, 0.2, 0.0}, seed_2 = {0.8, 0.8, 0.8, 0.8, 0.0};
+  std::vector<std::filesystem::path> runs;
+  for (const std::string noise : {"0.02", "0.01"}) {
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+      for (const int seed : {1, 2}) {
+        runs.push_back(scratch / (noise + "-" + std::to_string(seed) + "-" + std::to_string(i)));
+        const double eta =
+            noise == "0.02" ? (angles[i] <= 120 ? 0.8 : 0.0) : (seed == 1 ? seed_1 : seed_2)[i];
+        write_curve_run(runs.back(), seed, angles[i], eta, noise);
+      }
+    }
+  }
+  RunRecord stopped = *read_run_record(runs[9]);
+  stopped.status = RunStatus::kInterrupted;
+  write_file_atomically(runs[9] / kRunRecordFile, to_json(stopped));
+
+  std::ostringstream err;
+  const std::optional<CsvTable> table = runs_sweep_table(runs, RunHistoryOptions{}, err);
+  REQUIRE(table);
+  CHECK(table->header == std::vector<std::string>{"point", "trap.angle",
+                                                  "species[0].noise.kick_eps", "seed", "status",
+                                                  "eta_mean", "eta_time_to_90_s", "simulated_s"});
+  REQUIRE(table->rows.size() == 19);
+  const std::vector<std::string> first = table->rows[0];
+  CHECK(std::vector<std::string>(first.begin(), first.begin() + 5) ==
+        std::vector<std::string>{"0.02-1-0", "100", "0.02", "1", "complete"});
+  CHECK(std::stod(first[5]) == Approx(0.8));
+  CHECK(first[7] == "100");
+  CHECK_THAT(err.str(), Catch::Contains("note: left out, not complete: " + runs[9].string()));
+
+  // Drawn by rodsort plot as a sweep's curves: theta_c per noise as summarize finds it (132 and
+  // 125 degrees), the runs' own eta(t) beside them, and no temporary folder left behind.
+  const std::filesystem::path temporary = scratch / "tmp";
+  std::filesystem::create_directory(temporary);
+  const char* tmpdir = std::getenv("TMPDIR");
+  const std::string saved = tmpdir ? tmpdir : "";
+  setenv("TMPDIR", temporary.c_str(), 1);
+  std::vector<std::string> arguments = {"plot"};
+  for (const auto& run : runs) arguments.push_back(run.string());
+  arguments.insert(arguments.end(), {"--what", "eta-theta,thetac-eps,eta", "--format", "png", "-o",
+                                     (scratch / "plots").string()});
+  const auto plotted = rodsort::runner::testing::run_rodsort(arguments, scratch.path());
+  if (tmpdir) {
+    setenv("TMPDIR", saved.c_str(), 1);
+  } else {
+    unsetenv("TMPDIR");
+  }
+  INFO(plotted.out << plotted.err);
+  REQUIRE(plotted.status == kExitOk);
+  for (const char* file : {"eta-theta.png", "thetac-eps.png", "eta.png", "theta_c.csv"}) {
+    CHECK(std::filesystem::is_regular_file(scratch / "plots" / file));
+  }
+  const CsvTable theta_c = read_csv(scratch / "plots" / "theta_c.csv");
+  REQUIRE(theta_c.rows.size() == 2);
+  CHECK(theta_c.rows[0][0] == "0.01");
+  CHECK(std::stod(theta_c.rows[0][1]) == Approx(132.0));
+  CHECK(theta_c.rows[1][0] == "0.02");
+  CHECK(std::stod(theta_c.rows[1][1]) == Approx(125.0));
+  CHECK(std::filesystem::is_empty(temporary));
+
+  // Runs at one angle make no curve: said, and nothing drawn.
+  const auto one_angle =
+      rodsort::runner::testing::run_rodsort({"plot", runs[0].string(), runs[1].string(), "--what",
+                                             "eta-theta", "-o", (scratch / "one").string()},
+                                            scratch.path());
+  CHECK(one_angle.status == kExitFailure);
+  CHECK_THAT(one_angle.err, Catch::Contains("needs runs at two trap angles or more"));
+  CHECK(!std::filesystem::exists(scratch / "one" / "eta-theta.png"));
 }
