@@ -236,26 +236,37 @@ void write_curve_run(const std::filesystem::path& directory, int seed, double an
       << (seed == 1 ? "csv" : "h5md") << "\nderived:\n  rods: " << 400 - angle << "\n";
 }
 
-}  // namespace
-
-TEST_CASE("summarize gives theta_c of runs made one by one at several angles",
-          "[runner][summarize]") {
-  TempDirectory scratch;
-  // Seed 1 drops between 120 and 130 degrees, seed 2 between 130 and 140; plateau 0.8.
+/// Runs at five angles from 100 to 140 degrees, seeds 1 and 2, named PREFIX-SEED-INDEX, in the
+/// order angle by angle, seed 1 first. At eps = 0.01 seed 1 drops between 120 and 130 degrees and
+/// seed 2 between 130 and 140 (plateau 0.8: the mean curve through 0.4 at 130 + 0.1 / 0.5 * 10 =
+/// 132, the seeds alone at 120 + 0.4 / 0.6 * 10 = 126.67 and 130 + 0.4 / 0.8 * 10 = 135); at any
+/// other noise both hold 0.8 to 120 degrees and 0 beyond (through 0.4 at 125).
+std::vector<std::filesystem::path> write_curve_runs(const std::filesystem::path& scratch,
+                                                    const std::string& prefix,
+                                                    const std::string& kick_eps) {
   const std::vector<double> angles = {100, 110, 120, 130, 140};
   const std::vector<double> seed_1 = {0.8, 0.8, 0.8, 0.2, 0.0}, seed_2 = {0.8, 0.8, 0.8, 0.8, 0.0};
   std::vector<std::filesystem::path> runs;
   for (std::size_t i = 0; i < angles.size(); ++i) {
     for (const int seed : {1, 2}) {
-      runs.push_back(scratch / ("s" + std::to_string(seed) + "-" + std::to_string(i)));
-      write_curve_run(runs.back(), seed, angles[i], (seed == 1 ? seed_1 : seed_2)[i]);
+      runs.push_back(scratch / (prefix + "-" + std::to_string(seed) + "-" + std::to_string(i)));
+      const double eta =
+          kick_eps != "0.01" ? (angles[i] <= 120 ? 0.8 : 0.0) : (seed == 1 ? seed_1 : seed_2)[i];
+      write_curve_run(runs.back(), seed, angles[i], eta, kick_eps);
     }
   }
+  return runs;
+}
+
+}  // namespace
+
+TEST_CASE("summarize gives theta_c of runs made one by one at several angles",
+          "[runner][summarize]") {
+  TempDirectory scratch;
+  std::vector<std::filesystem::path> runs = write_curve_runs(scratch.path(), "s", "0.01");
   std::ostringstream out, err;
   REQUIRE(summarize_runs(runs, RunHistoryOptions{}, out, err) == kExitOk);
   INFO(out.str());
-  // The mean curve, 0.8 0.8 0.8 0.5 0: through 0.4 at 130 + 0.1 / 0.5 * 10 = 132; each seed
-  // alone at 120 + 0.4 / 0.6 * 10 = 126.67 and 130 + 0.4 / 0.8 * 10 = 135.
   CHECK_THAT(
       out.str(),
       Catch::Contains("these runs: theta_c = 132 deg (between 130 and 140; plateau eta 0.8)"));
@@ -283,15 +294,8 @@ TEST_CASE("summarize gives theta_c of runs made one by one at several angles",
   CHECK_THAT(out_until.str(), Catch::Contains("each seed alone: 1: 126.7, 2: 135\n"));
 
   // Runs of another noise make a curve of their own, as in a sweep over the noise: one theta_c
-  // per noise, in the noise's order. At 0.02 both seeds hold 0.8 to 120 degrees and 0 beyond:
-  // through 0.4 at 125.
-  std::vector<std::filesystem::path> noises;
-  for (std::size_t i = 0; i < angles.size(); ++i) {
-    for (const int seed : {1, 2}) {
-      noises.push_back(scratch / ("n" + std::to_string(seed) + "-" + std::to_string(i)));
-      write_curve_run(noises.back(), seed, angles[i], angles[i] <= 120 ? 0.8 : 0.0, "0.02");
-    }
-  }
+  // per noise, in the noise's order.
+  std::vector<std::filesystem::path> noises = write_curve_runs(scratch.path(), "n", "0.02");
   noises.insert(noises.end(), runs.begin(), runs.end());
   std::ostringstream out_noises, err_noises;
   REQUIRE(summarize_runs(noises, RunHistoryOptions{}, out_noises, err_noises) == kExitOk);
@@ -332,21 +336,9 @@ TEST_CASE("summarize gives theta_c of runs made one by one at several angles",
 TEST_CASE("Runs made one by one read as a sweep's points, one curve per noise",
           "[runner][summarize]") {
   TempDirectory scratch;
-  // eps = 0.01 drops between 120 and 130 degrees (seed 1) and 130 and 140 (seed 2); eps = 0.02
-  // between 120 and 130 in both seeds; seed 2 at 0.02 and 140 degrees has not finished.
-  const std::vector<double> angles = {100, 110, 120, 130, 140};
-  const std::vector<double> seed_1 = {0.8, 0.8, 0.8, 0.2, 0.0}, seed_2 = {0.8, 0.8, 0.8, 0.8, 0.0};
-  std::vector<std::filesystem::path> runs;
-  for (const std::string noise : {"0.02", "0.01"}) {
-    for (std::size_t i = 0; i < angles.size(); ++i) {
-      for (const int seed : {1, 2}) {
-        runs.push_back(scratch / (noise + "-" + std::to_string(seed) + "-" + std::to_string(i)));
-        const double eta =
-            noise == "0.02" ? (angles[i] <= 120 ? 0.8 : 0.0) : (seed == 1 ? seed_1 : seed_2)[i];
-        write_curve_run(runs.back(), seed, angles[i], eta, noise);
-      }
-    }
-  }
+  // Two noises (write_curve_runs); seed 2 at 0.02 and 140 degrees has not finished.
+  std::vector<std::filesystem::path> runs = write_curve_runs(scratch.path(), "0.02", "0.02");
+  for (const auto& run : write_curve_runs(scratch.path(), "0.01", "0.01")) runs.push_back(run);
   RunRecord stopped = *read_run_record(runs[9]);
   stopped.status = RunStatus::kInterrupted;
   write_file_atomically(runs[9] / kRunRecordFile, to_json(stopped));
