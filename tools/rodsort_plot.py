@@ -619,7 +619,8 @@ def plot_eta_theta(plt, sweep, out_dir, formats, written):
                     reasons.append("η still rising")
                 if "beyond theta_c" in result["caution"]:
                     reasons.append("a wider trap fills")
-                label += f" (unreliable: {', '.join(reasons)}; see theta_c.csv)"
+                # On a line of its own, so that the legend stays within the axes' width.
+                label += f"\n(unreliable: {', '.join(reasons)}; see theta_c.csv)"
             axes.axvline(result["angle"], color=line_colour, linestyle=":", linewidth=1.0)
         axes.errorbar([p[0] for p in curve], [p[1] for p in curve], yerr=[p[2] for p in curve],
                       color=line_colour, marker="o", markersize=4, linewidth=1.2, capsize=2,
