@@ -84,13 +84,22 @@ class ScratchFolder {
 
 /// The curves of a sweep (eta against theta, theta_c against eps) drawn from runs made one by
 /// one: rodsort reads them as a sweep's points (runner::runs_sweep_table, as `rodsort summarize`
-/// groups them), writes that table as a sweep directory of its own, and plots it.
-int plot_runs_curves(const PlotOptions& options, const std::string& kinds) {
+/// groups them), writes that table as a sweep directory of its own, and plots it; the runs' own
+/// kinds (`run_kinds`) are drawn first, so that an unknown one is refused before anything is
+/// written.
+int plot_runs_curves(const PlotOptions& options, const std::string& kinds,
+                     const std::string& run_kinds) {
   std::vector<std::filesystem::path> runs(options.paths.begin(), options.paths.end());
   runner::RunHistoryOptions reading;
   reading.until_s = options.until;
   const std::optional<runner::CsvTable> table = runner::runs_sweep_table(runs, reading, std::cerr);
   if (!table) return runner::kExitFailure;
+  if (!run_kinds.empty()) {
+    if (const int drawn = run_script(options.paths, run_kinds, options.output, options);
+        drawn != runner::kExitOk) {
+      return drawn;
+    }
+  }
   ScratchFolder sweep;
   runner::write_file_atomically(sweep.path() / "sweep.csv", runner::csv_text(*table));
   // Species' names for the axes and legends, from the first run's scenario.
@@ -128,9 +137,7 @@ int plot(const PlotOptions& options) {
     for (const std::string& kind : kinds) joined += (joined.empty() ? "" : ",") + kind;
     return joined;
   };
-  const int curves = plot_runs_curves(options, join(curve_kinds));
-  if (curves != runner::kExitOk || run_kinds.empty()) return curves;
-  return run_script(options.paths, join(run_kinds), options.output, options);
+  return plot_runs_curves(options, join(curve_kinds), join(run_kinds));
 }
 
 }  // namespace

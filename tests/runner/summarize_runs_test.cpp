@@ -387,6 +387,15 @@ TEST_CASE("Runs made one by one read as a sweep's points, one curve per noise",
   CHECK(std::stod(theta_c.rows[1][1]) == Approx(125.0));
   CHECK(std::filesystem::is_empty(temporary));
 
+  // An unknown kind beside them is refused before anything is drawn.
+  const auto unknown = rodsort::runner::testing::run_rodsort(
+      {"plot", runs[0].string(), runs[2].string(), "--what", "eta-theta,etaa", "-o",
+       (scratch / "unknown").string()},
+      scratch.path());
+  CHECK(unknown.status == kExitUsage);
+  CHECK_THAT(unknown.err, Catch::Contains("unknown kind 'etaa'"));
+  CHECK(!std::filesystem::exists(scratch / "unknown" / "eta-theta.png"));
+
   // Runs at one angle make no curve: said, and nothing drawn.
   const auto one_angle =
       rodsort::runner::testing::run_rodsort({"plot", runs[0].string(), runs[1].string(), "--what",
