@@ -9,6 +9,7 @@
 #include <ostream>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -644,16 +645,19 @@ Differences differences(const std::vector<CurveScenario>& scenarios_of_runs) {
   return result;
 }
 
-/// Orders groups by their values, numerically where both values are numbers.
-bool values_before(const std::vector<std::string>& a, const std::vector<std::string>& b) {
-  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
-    if (a[k] == b[k]) continue;
-    const std::optional<double> x = parse_number(a[k]), y = parse_number(b[k]);
-    if (x && y && *x != *y) return *x < *y;
-    return a[k] < b[k];
+/// Orders groups by their values, key by key: numbers first, in numeric order, then the other
+/// values as text (the order of `rodsort plot`'s curves). A total order, so that it can key a map.
+struct ValuesBefore {
+  bool operator()(const std::vector<std::string>& a, const std::vector<std::string>& b) const {
+    const auto rank = [](const std::string& value) {
+      const std::optional<double> number = parse_number(value);
+      return std::make_tuple(number ? 0 : 1, number.value_or(0.0), value);
+    };
+    return std::lexicographical_compare(
+        a.begin(), a.end(), b.begin(), b.end(),
+        [&](const std::string& x, const std::string& y) { return rank(x) < rank(y); });
   }
-  return a.size() < b.size();
-}
+};
 
 /// Runs may differ in this many keys besides those of a curve and still be grouped by them.
 constexpr std::size_t kMaxGroupKeys = 3;
@@ -741,18 +745,16 @@ void report_runs_critical_angle(const std::vector<RunHistory>& histories,
     AngleMap angles;
     std::map<double, AngleMap> seeds;
   };
-  std::vector<std::pair<std::vector<std::string>, Group>> groups;
+  std::map<std::vector<std::string>, Group, ValuesBefore> groups;
   for (std::size_t i = 0; i < histories.size(); ++i) {
     if (!curve->counted[i]) continue;
     const RunHistory& history = histories[i];
-    auto group = std::find_if(groups.begin(), groups.end(),
-                              [&](const auto& g) { return g.first == curve->values[i]; });
-    if (group == groups.end()) group = groups.insert(groups.end(), {curve->values[i], Group{}});
+    Group& group = groups[curve->values[i]];
     const double seed = static_cast<double>(history.record.seed);
     const double duration = history.half_to;
-    add_run(group->second.angles[curve->angles[i]], history.eta_stats.mean,
-            history.eta_stats.time_to_90, duration);
-    add_run(group->second.seeds[seed][curve->angles[i]], history.eta_stats.mean,
+    add_run(group.angles[curve->angles[i]], history.eta_stats.mean, history.eta_stats.time_to_90,
+            duration);
+    add_run(group.seeds[seed][curve->angles[i]], history.eta_stats.mean,
             history.eta_stats.time_to_90, duration);
   }
   if (const std::string line = left_out_line(histories, *curve, options); !line.empty()) {
@@ -766,8 +768,6 @@ void report_runs_critical_angle(const std::vector<RunHistory>& histories,
     }
     out << " (the runs differ there)\n";
   }
-  std::sort(groups.begin(), groups.end(),
-            [](const auto& a, const auto& b) { return values_before(a.first, b.first); });
   CriticalAngleTables tables = critical_angle_tables(curve->keys);
   for (const auto& [values, group] : groups) {
     report_group(curve->keys.empty() ? "these runs" : group_label(curve->keys, values), values,
