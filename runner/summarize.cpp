@@ -65,6 +65,20 @@ void print_aligned(std::ostream& out, const std::vector<std::vector<std::string>
   }
 }
 
+/// Orders groups by their values, key by key: numbers first, in numeric order, then the other
+/// values as text (the order of `rodsort plot`'s curves). A total order, so that it can key a map.
+struct ValuesBefore {
+  bool operator()(const std::vector<std::string>& a, const std::vector<std::string>& b) const {
+    const auto rank = [](const std::string& value) {
+      const std::optional<double> number = parse_number(value);
+      return std::make_tuple(number ? 0 : 1, number.value_or(0.0), value);
+    };
+    return std::lexicographical_compare(
+        a.begin(), a.end(), b.begin(), b.end(),
+        [&](const std::string& x, const std::string& y) { return rank(x) < rank(y); });
+  }
+};
+
 /// The label of a group of points that share every swept value but the angle and the seed.
 std::string group_label(const std::vector<std::string>& keys,
                         const std::vector<std::string>& values) {
@@ -263,8 +277,8 @@ void report_critical_angles(const std::filesystem::path& sweep_directory, const 
     return value ? *value : std::numeric_limits<double>::quiet_NaN();
   };
   // group values -> angle -> its runs; and the same for each seed of the group alone
-  std::map<std::vector<std::string>, AngleMap> groups;
-  std::map<std::vector<std::string>, std::map<double, AngleMap>> seed_groups;
+  std::map<std::vector<std::string>, AngleMap, ValuesBefore> groups;
+  std::map<std::vector<std::string>, std::map<double, AngleMap>, ValuesBefore> seed_groups;
   const auto seed_column = table.column(kSeedKey);
   for (const auto& row : table.rows) {
     std::vector<std::string> group;
@@ -644,20 +658,6 @@ Differences differences(const std::vector<CurveScenario>& scenarios_of_runs) {
   }
   return result;
 }
-
-/// Orders groups by their values, key by key: numbers first, in numeric order, then the other
-/// values as text (the order of `rodsort plot`'s curves). A total order, so that it can key a map.
-struct ValuesBefore {
-  bool operator()(const std::vector<std::string>& a, const std::vector<std::string>& b) const {
-    const auto rank = [](const std::string& value) {
-      const std::optional<double> number = parse_number(value);
-      return std::make_tuple(number ? 0 : 1, number.value_or(0.0), value);
-    };
-    return std::lexicographical_compare(
-        a.begin(), a.end(), b.begin(), b.end(),
-        [&](const std::string& x, const std::string& y) { return rank(x) < rank(y); });
-  }
-};
 
 /// Runs may differ in this many keys besides those of a curve and still be grouped by them.
 constexpr std::size_t kMaxGroupKeys = 3;

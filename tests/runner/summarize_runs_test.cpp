@@ -405,3 +405,37 @@ TEST_CASE("Runs made one by one read as a sweep's points, one curve per noise",
   CHECK_THAT(one_angle.err, Catch::Contains("needs runs at two trap angles or more"));
   CHECK(!std::filesystem::exists(scratch / "one" / "eta-theta.png"));
 }
+
+TEST_CASE("A sweep's theta_c groups come in the numeric order of their values",
+          "[runner][summarize]") {
+  // The runs of two noises laid out as a sweep's points: 5e-3 comes after 0.01 as text and before
+  // it as a number; the groups, printed and in critical_angle.csv, follow the number.
+  TempDirectory scratch;
+  const std::filesystem::path sweep = scratch / "sweep";
+  std::vector<std::filesystem::path> runs = write_curve_runs(sweep, "a", "0.01");
+  for (const auto& run : write_curve_runs(sweep, "b", "5e-3")) runs.push_back(run);
+  std::ostringstream err;
+  const std::optional<CsvTable> table = runs_sweep_table(runs, RunHistoryOptions{}, err);
+  REQUIRE(table);
+  write_file_atomically(sweep / "sweep.csv", csv_text(*table));
+
+  std::ostringstream out;
+  REQUIRE(summarize_sweep(sweep, out, err) == kExitOk);
+  const std::string summary = out.str();
+  INFO(summary << err.str());
+  const std::size_t small = summary.find("species[0].noise.kick_eps=5e-3: theta_c = 125 deg");
+  const std::size_t large = summary.find("species[0].noise.kick_eps=0.01: theta_c = 132 deg");
+  REQUIRE(small != std::string::npos);
+  REQUIRE(large != std::string::npos);
+  CHECK(small < large);
+  const CsvTable critical = read_csv(sweep / "critical_angle.csv");
+  REQUIRE(critical.rows.size() == 2);
+  CHECK(critical.rows[0][0] == "5e-3");
+  CHECK(std::stod(critical.rows[0][1]) == Approx(125.0));
+  CHECK(critical.rows[1][0] == "0.01");
+  CHECK(std::stod(critical.rows[1][1]) == Approx(132.0));
+  const CsvTable seeds = read_csv(sweep / "critical_angle_seeds.csv");
+  REQUIRE(seeds.rows.size() == 4);
+  CHECK(seeds.rows[0][0] == "5e-3");
+  CHECK(seeds.rows[3][0] == "0.01");
+}
