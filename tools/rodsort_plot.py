@@ -406,20 +406,24 @@ class Sweep:
         nans = [math.nan] * len(angles)
         levelled = table.numbers("eta_time_to_90_s") if table.has("eta_time_to_90_s") else nans
         durations = table.numbers("simulated_s") if table.has("simulated_s") else nans
+        seeds = table.text("seed") if table.has("seed") else [None] * len(angles)
         self.skipped = 0
         grouped = {}
         # key -> angle -> (latest time to 90%, NaN once a run never got there; shortest run)
         self.levels = {}
-        for angle, eta, key, state, level, duration in zip(angles, etas, others, status,
-                                                           levelled, durations):
+        # key -> seed -> angle -> [(eta, time to 90%, run length)]: each seed's own curve
+        self.seed_runs = {}
+        for angle, eta, key, state, level, duration, seed in zip(angles, etas, others, status,
+                                                                 levelled, durations, seeds):
             if math.isnan(eta) or state != "complete":
                 self.skipped += 1
                 continue
             grouped.setdefault(key, {}).setdefault(angle, []).append(eta)
-            known = self.levels.setdefault(key, {}).get(angle, (0.0, math.inf))
-            latest = math.nan if math.isnan(level) or math.isnan(known[0]) \
-                else max(known[0], level)
-            self.levels[key][angle] = (latest, min(known[1], duration))
+            levels = self.levels.setdefault(key, {})
+            levels[angle] = merged_level(levels.get(angle, (0.0, math.inf)), level, duration)
+            if seed is not None:
+                self.seed_runs.setdefault(key, {}).setdefault(seed, {}).setdefault(
+                    angle, []).append((eta, level, duration))
         if not grouped:
             raise PlotError(f"{table.path}: no complete point with a value of "
                             f"'{self.eta_column}'")
@@ -456,6 +460,38 @@ class Sweep:
             return (angle, mean, latest, shortest)
         return {key: critical_angle([point(key, a, m) for a, m, _, _ in self.curves[key]])
                 for key in self.keys()}
+
+
+    def seed_critical_angles(self, key):
+        """theta_c of each seed's own curve, as metrics::critical_angle_per_seed: (mean, standard
+        error, how many seeds have one, how many seeds there are); mean and error are NaN when
+        fewer than two seeds have one."""
+        found = []
+        per_seed = self.seed_runs.get(key, {})
+        for by_angle in per_seed.values():
+            points = []
+            for angle in sorted(by_angle):
+                runs = by_angle[angle]
+                level = (0.0, math.inf)
+                for _, run_level, duration in runs:
+                    level = merged_level(level, run_level, duration)
+                mean = sum(eta for eta, _, _ in runs) / len(runs)
+                known = not (math.isnan(level[1]) or math.isinf(level[1]))
+                points.append((angle, mean) + (level if known else ()))
+            result, _ = critical_angle(points)
+            if result:
+                found.append(result["angle"])
+        if len(found) < 2:
+            return math.nan, math.nan, len(found), len(per_seed)
+        mean, error = mean_and_standard_error(found)
+        return mean, error, len(found), len(per_seed)
+
+
+def merged_level(known, level, duration):
+    """The runs at one point together: the latest time to 90% (NaN once a run never got
+    there) and the shortest run, from `known` so far and one more run's."""
+    latest = math.nan if math.isnan(level) or math.isnan(known[0]) else max(known[0], level)
+    return latest, min(known[1], duration)
 
 
 def is_number(text):
@@ -638,32 +674,56 @@ def plot_thetac_eps(plt, sweep, out_dir, formats, written):
     if len(eps_values) < 2:
         raise PlotError(f"{sweep.table.path}: theta_c against eps needs a sweep over "
                         "species[...].noise.kick_eps with at least two values")
-    # One line per combination of the swept keys other than eps.
+    # One line per combination of the swept keys other than eps. A noise level where two seeds
+    # or more have a theta_c of their own shows their mean and its standard error (the error bar
+    # rodsort summarize gives); one without shows the seeds' mean curve's theta_c, its bar
+    # spanning the two angles that bracket the drop.
     families = {}
     for key, (result, _) in sweep.critical_angles().items():
         if not result:
             continue
         family = tuple(v for c, v in zip(sweep.other_columns, key) if c != sweep.eps_column)
-        families.setdefault(family, []).append((float(sweep.value(key, sweep.eps_column)), result))
+        mean, error, found, _ = sweep.seed_critical_angles(key)
+        if found >= 2:
+            point = (mean, error, error, True)
+        else:
+            point = (result["angle"], result["angle"] - result["below"],
+                     result["above"] - result["angle"], False)
+        families.setdefault(family, []).append((float(sweep.value(key, sweep.eps_column)),)
+                                               + point)
     if not families:
         raise PlotError(f"{sweep.table.path}: no noise level has a critical angle "
                         "(see theta_c.csv for why)")
     family_columns = [c for c in sweep.other_columns if c != sweep.eps_column]
     figure, axes = new_figure(plt)
+    kinds_drawn = set()
     for index, (family, points) in enumerate(sorted(families.items())):
         points.sort(key=lambda point: point[0])
-        theta = [result["angle"] for _, result in points]
-        lower = [result["angle"] - result["below"] for _, result in points]
-        upper = [result["above"] - result["angle"] for _, result in points]
+        line_colour = "black" if len(families) == 1 else colour(index)
         label = ", ".join(physics_value(c, v, sweep.species)
                           for c, v in zip(family_columns, family)) or None
-        axes.errorbar([eps for eps, _ in points], theta, yerr=[lower, upper],
-                      color="black" if len(families) == 1 else colour(index), marker="o",
-                      markersize=4, capsize=3, linewidth=1.2, label=label)
+        axes.plot([p[0] for p in points], [p[1] for p in points], color=line_colour,
+                  linewidth=1.2, label=label)
+        for over_seeds in (True, False):
+            chosen = [p for p in points if p[4] == over_seeds]
+            if not chosen:
+                continue
+            kinds_drawn.add(over_seeds)
+            axes.errorbar([p[0] for p in chosen], [p[1] for p in chosen],
+                          yerr=[[p[2] for p in chosen], [p[3] for p in chosen]],
+                          color=line_colour, linestyle="none", marker="o" if over_seeds else "s",
+                          markerfacecolor=line_colour if over_seeds else "white",
+                          markersize=5, capsize=3)
+    # What the markers and bars are, as legend entries of their own.
+    for over_seeds in sorted(kinds_drawn, reverse=True):
+        axes.errorbar([], [], yerr=[], color="0.3", linestyle="none",
+                      marker="o" if over_seeds else "s",
+                      markerfacecolor="0.3" if over_seeds else "white", markersize=5, capsize=3,
+                      label="θc of each seed: mean ± standard error" if over_seeds else
+                      "θc of the seeds' mean η; bar: the angles that bracket the drop")
     axes.set_xlabel(physics_name(sweep.eps_column, sweep.species))
     axes.set_ylabel("critical angle θc [degrees]")
-    if len(families) > 1:
-        axes.legend(frameon=False, fontsize="small")
+    axes.legend(frameon=False, fontsize="small")
     save(plt, figure, out_dir, "thetac-eps", formats, written)
 
 
@@ -722,18 +782,24 @@ def plot_measures(plt, sweep_dir, out_dir, formats, written):
 
 def write_critical_angles(sweep, out_dir, written):
     """theta_c.csv: one row per curve, its swept values, then theta_c and the bracketing angles
-    [degrees], the plateau eta, and why theta_c was not found when it was not."""
+    [degrees], the plateau eta, and why theta_c was not found when it was not; then the mean and
+    standard error of the seeds' own theta_c and how many seeds have one (as critical_angle.csv)."""
     path = os.path.join(out_dir, "theta_c.csv")
     with open(path, "w", newline="") as stream:
         writer = csv.writer(stream, lineterminator="\n")
-        writer.writerow(sweep.other_columns + ["theta_c", "below", "above", "plateau", "reason"])
+        writer.writerow(sweep.other_columns + ["theta_c", "below", "above", "plateau", "reason",
+                                               "theta_c_seed_mean", "theta_c_seed_stderr",
+                                               "seeds_found"])
         for key, (result, reason) in sweep.critical_angles().items():
             if result:
                 note = f"caution: {result['caution']}" if result["caution"] else ""
-                writer.writerow(list(key) + [f"{result[k]:.9g}" for k in
-                                             ("angle", "below", "above", "plateau")] + [note])
+                row = list(key) + [f"{result[k]:.9g}" for k in
+                                   ("angle", "below", "above", "plateau")] + [note]
             else:
-                writer.writerow(list(key) + ["nan", "nan", "nan", "nan", reason])
+                row = list(key) + ["nan", "nan", "nan", "nan", reason]
+            mean, error, found, seeds = sweep.seed_critical_angles(key)
+            row += [f"{mean:.9g}", f"{error:.9g}", f"{found} of {seeds}" if seeds >= 2 else ""]
+            writer.writerow(row)
     written.append(path)
 
 

@@ -222,7 +222,13 @@ TEST_CASE("The plot script finds theta_c of a sweep as the metrics layer does", 
   std::ifstream theta_c(sweep / "plots" / "theta_c.csv");
   std::string line;
   std::getline(theta_c, line);
-  CHECK(line == "species[0].noise.kick_eps,theta_c,below,above,plateau,reason");
+  CHECK(line ==
+        "species[0].noise.kick_eps,theta_c,below,above,plateau,reason,theta_c_seed_mean,"
+        "theta_c_seed_stderr,seeds_found");
+  // One seed: no seeds' error bar, and the figure says that its bars bracket the drop.
+  CHECK_THAT(read_text(sweep / "plots" / "thetac-eps.svg"),
+             Catch::Contains("bar: the angles that bracket the drop") &&
+                 !Catch::Contains("mean ± standard error"));
   for (std::size_t n = 0; n < noises.size(); ++n) {
     std::vector<metrics::SweepPoint> points;
     for (std::size_t a = 0; a < angles.size(); ++a) points.push_back({angles[a], etas[n][a]});

@@ -385,6 +385,15 @@ TEST_CASE("Runs made one by one read as a sweep's points, one curve per noise",
   CHECK(std::stod(theta_c.rows[0][1]) == Approx(132.0));
   CHECK(theta_c.rows[1][0] == "0.02");
   CHECK(std::stod(theta_c.rows[1][1]) == Approx(125.0));
+  // The seeds' own theta_c, as summarize gives it: at 0.01 126.67 and 135 (130.8 +- 4.2); at 0.02
+  // seed 2, stopped at 140 degrees, has four angles and none.
+  const std::size_t seed_mean = *theta_c.column("theta_c_seed_mean");
+  CHECK(std::stod(theta_c.rows[0][seed_mean]) == Approx(130.8333).epsilon(1e-5));
+  CHECK(std::stod(theta_c.rows[0][*theta_c.column("theta_c_seed_stderr")]) ==
+        Approx(4.1667).epsilon(1e-4));
+  CHECK(theta_c.rows[0][*theta_c.column("seeds_found")] == "2 of 2");
+  CHECK(theta_c.rows[1][seed_mean] == "nan");
+  CHECK(theta_c.rows[1][*theta_c.column("seeds_found")] == "1 of 2");
   CHECK(std::filesystem::is_empty(temporary));
 
   // An unknown kind beside them is refused before anything is drawn.
