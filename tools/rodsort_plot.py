@@ -461,7 +461,6 @@ class Sweep:
         return {key: critical_angle([point(key, a, m) for a, m, _, _ in self.curves[key]])
                 for key in self.keys()}
 
-
     def seed_critical_angles(self, key):
         """theta_c of each seed's own curve, as metrics::critical_angle_per_seed: (mean, standard
         error, how many seeds have one, how many seeds there are); mean and error are NaN when
