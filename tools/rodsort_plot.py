@@ -408,31 +408,29 @@ class Sweep:
         durations = table.numbers("simulated_s") if table.has("simulated_s") else nans
         seeds = table.text("seed") if table.has("seed") else [None] * len(angles)
         self.skipped = 0
-        grouped = {}
-        # key -> angle -> (latest time to 90%, NaN once a run never got there; shortest run)
-        self.levels = {}
-        # key -> seed -> angle -> [(eta, time to 90%, run length)]: each seed's own curve
+        # key -> angle -> [(eta, time to 90%, run length)] of its complete runs; and the same for
+        # each seed's own curve, key -> seed -> angle -> [...]
+        self.runs = {}
         self.seed_runs = {}
         for angle, eta, key, state, level, duration, seed in zip(angles, etas, others, status,
                                                                  levelled, durations, seeds):
             if math.isnan(eta) or state != "complete":
                 self.skipped += 1
                 continue
-            grouped.setdefault(key, {}).setdefault(angle, []).append(eta)
-            levels = self.levels.setdefault(key, {})
-            levels[angle] = merged_level(levels.get(angle, (0.0, math.inf)), level, duration)
+            run = (eta, level, duration)
+            self.runs.setdefault(key, {}).setdefault(angle, []).append(run)
             if seed is not None:
                 self.seed_runs.setdefault(key, {}).setdefault(seed, {}).setdefault(
-                    angle, []).append((eta, level, duration))
-        if not grouped:
+                    angle, []).append(run)
+        if not self.runs:
             raise PlotError(f"{table.path}: no complete point with a value of "
                             f"'{self.eta_column}'")
         # key (values of other_columns) -> sorted [(angle, mean eta, standard error, samples)]
         self.curves = {}
-        for key, by_angle in grouped.items():
+        for key, by_angle in self.runs.items():
             curve = []
             for angle in sorted(by_angle):
-                values = by_angle[angle]
+                values = [eta for eta, _, _ in by_angle[angle]]
                 mean, spread = mean_and_standard_error(values)
                 curve.append((angle, mean, spread, len(values)))
             self.curves[key] = curve
@@ -453,13 +451,7 @@ class Sweep:
 
     def critical_angles(self):
         """key -> (theta_c dict or None, reason)."""
-        def point(key, angle, mean):
-            latest, shortest = self.levels[key][angle]
-            if math.isnan(shortest) or math.isinf(shortest):
-                return (angle, mean)
-            return (angle, mean, latest, shortest)
-        return {key: critical_angle([point(key, a, m) for a, m, _, _ in self.curves[key]])
-                for key in self.keys()}
+        return {key: critical_angle(curve_points(self.runs[key])) for key in self.keys()}
 
     def seed_critical_angles(self, key):
         """theta_c of each seed's own curve, as metrics::critical_angle_per_seed: (mean, standard
@@ -468,16 +460,7 @@ class Sweep:
         found = []
         per_seed = self.seed_runs.get(key, {})
         for by_angle in per_seed.values():
-            points = []
-            for angle in sorted(by_angle):
-                runs = by_angle[angle]
-                level = (0.0, math.inf)
-                for _, run_level, duration in runs:
-                    level = merged_level(level, run_level, duration)
-                mean = sum(eta for eta, _, _ in runs) / len(runs)
-                known = not (math.isnan(level[1]) or math.isinf(level[1]))
-                points.append((angle, mean) + (level if known else ()))
-            result, _ = critical_angle(points)
+            result, _ = critical_angle(curve_points(by_angle))
             if result:
                 found.append(result["angle"])
         if len(found) < 2:
@@ -486,11 +469,23 @@ class Sweep:
         return mean, error, len(found), len(per_seed)
 
 
-def merged_level(known, level, duration):
-    """The runs at one point together: the latest time to 90% (NaN once a run never got
-    there) and the shortest run, from `known` so far and one more run's."""
-    latest = math.nan if math.isnan(level) or math.isnan(known[0]) else max(known[0], level)
-    return latest, min(known[1], duration)
+def curve_points(by_angle):
+    """critical_angle's points from runs grouped by angle (angle -> [(eta, time to 90%, run
+    length)]): the angle, the runs' mean eta, and, where the runs' lengths are known, the latest
+    time to 90% (NaN once a run never got there) and the shortest run."""
+    points = []
+    for angle in sorted(by_angle):
+        runs = by_angle[angle]
+        latest, shortest = 0.0, math.inf
+        for _, level, duration in runs:
+            latest = math.nan if math.isnan(level) or math.isnan(latest) else max(latest, level)
+            shortest = min(shortest, duration)
+        mean = sum(eta for eta, _, _ in runs) / len(runs)
+        if math.isnan(shortest) or math.isinf(shortest):
+            points.append((angle, mean))
+        else:
+            points.append((angle, mean, latest, shortest))
+    return points
 
 
 def is_number(text):
