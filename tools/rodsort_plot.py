@@ -22,7 +22,8 @@ From a single-particle study directory (`rodsort single -o`: summary.csv, lags.c
   axial-velocity  P(V_x), the axial velocity over the window, with the experiments' range of v0
   msd             mean squared displacement and heading correlation against the lag
 theta_c follows metrics/critical_angle.cpp: the first downward crossing of half the mean eta of the
-three smallest angles, interpolated linearly; it is also written to theta_c.csv.
+three smallest angles, interpolated linearly; it is also written to theta_c.csv, each seed's own to
+theta_c_seeds.csv, and the differences between curves seed by seed to theta_c_paired.csv.
 
 Several run directories draw on the same axes (one line per run), for comparisons such as the
 paper's system sizes. Output goes to RUN_DIR/plots (SWEEP_DIR/plots), or to -o DIR.
@@ -453,20 +454,23 @@ class Sweep:
         """key -> (theta_c dict or None, reason)."""
         return {key: critical_angle(curve_points(self.runs[key])) for key in self.keys()}
 
+    def seed_curves(self, key):
+        """seed -> (theta_c dict or None, reason) of each seed's own curve, seeds in numeric
+        order where they are numbers."""
+        per_seed = self.seed_runs.get(key, {})
+        order = sorted(per_seed, key=lambda s: (0, float(s), "") if is_number(s) else (1, 0.0, s))
+        return {seed: critical_angle(curve_points(per_seed[seed])) for seed in order}
+
     def seed_critical_angles(self, key):
         """theta_c of each seed's own curve, as metrics::critical_angle_per_seed: (mean, standard
         error, how many seeds have one, how many seeds there are); mean and error are NaN when
         fewer than two seeds have one."""
-        found = []
-        per_seed = self.seed_runs.get(key, {})
-        for by_angle in per_seed.values():
-            result, _ = critical_angle(curve_points(by_angle))
-            if result:
-                found.append(result["angle"])
+        curves = self.seed_curves(key)
+        found = [result["angle"] for result, _ in curves.values() if result]
         if len(found) < 2:
-            return math.nan, math.nan, len(found), len(per_seed)
+            return math.nan, math.nan, len(found), len(curves)
         mean, error = mean_and_standard_error(found)
-        return mean, error, len(found), len(per_seed)
+        return mean, error, len(found), len(curves)
 
 
 def curve_points(by_angle):
@@ -794,6 +798,54 @@ def write_critical_angles(sweep, out_dir, written):
             mean, error, found, seeds = sweep.seed_critical_angles(key)
             row += [f"{mean:.9g}", f"{error:.9g}", f"{found} of {seeds}" if seeds >= 2 else ""]
             writer.writerow(row)
+    written.append(path)
+    if not any(len(sweep.seed_curves(key)) >= 2 for key in sweep.keys()):
+        return
+    # Each seed's own theta_c, and the differences between curves seed by seed.
+    path = os.path.join(out_dir, "theta_c_seeds.csv")
+    with open(path, "w", newline="") as stream:
+        writer = csv.writer(stream, lineterminator="\n")
+        writer.writerow(sweep.other_columns + ["seed", "theta_c", "reason"])
+        for key in sweep.keys():
+            for seed, (result, reason) in sweep.seed_curves(key).items():
+                if result:
+                    note = f"caution: {result['caution']}" if result["caution"] else ""
+                    writer.writerow(list(key) + [seed, f"{result['angle']:.9g}", note])
+                else:
+                    writer.writerow(list(key) + [seed, "nan", reason])
+    written.append(path)
+    write_paired_differences(sweep, out_dir, written)
+
+
+def write_paired_differences(sweep, out_dir, written):
+    """theta_c_paired.csv: for every two curves with two seeds or more that both have a theta_c
+    of their own, the mean and standard error of theta_c(curve) - theta_c(reference) over those
+    seeds; the reference is the curve that comes first in the curves' order (the lower noise).
+    A difference seed by seed removes what a seed's initial state adds to both curves alike, so
+    its error is the one to quote when two curves share seeds."""
+    found = {}
+    for key in sweep.keys():
+        found[key] = {seed: result["angle"] for seed, (result, _) in
+                      sweep.seed_curves(key).items() if result}
+    rows = []
+    keys = sweep.keys()
+    for i, reference in enumerate(keys):
+        for key in keys[i + 1:]:
+            shared = [seed for seed in found[key] if seed in found[reference]]
+            if len(shared) < 2:
+                continue
+            differences = [found[key][seed] - found[reference][seed] for seed in shared]
+            mean, error = mean_and_standard_error(differences)
+            rows.append(list(key) + list(reference) +
+                        [f"{mean:.9g}", f"{error:.9g}", len(shared), " ".join(shared)])
+    if not rows:
+        return
+    path = os.path.join(out_dir, "theta_c_paired.csv")
+    with open(path, "w", newline="") as stream:
+        writer = csv.writer(stream, lineterminator="\n")
+        writer.writerow(sweep.other_columns + [f"reference_{c}" for c in sweep.other_columns] +
+                        ["difference_mean", "difference_stderr", "seeds_paired", "seeds"])
+        writer.writerows(rows)
     written.append(path)
 
 

@@ -4,7 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "metrics/critical_angle.hpp"
 #include "metrics/metrics_observer.hpp"
@@ -244,6 +248,90 @@ TEST_CASE("The plot script finds theta_c of a sweep as the metrics layer does", 
     CHECK(above == expected.above);
     CHECK(plateau == Approx(expected.plateau).epsilon(1e-6));
   }
+}
+
+TEST_CASE("The plot script gives each seed's theta_c and the differences seed by seed",
+          "[render][plot]") {
+  require_plot_python();
+  const TempDirectory sweep;
+  const std::vector<double> angles = {100, 110, 120, 130, 140};
+  // eta by noise and seed: seeds 1-3 drop at both noises; seed 4 runs at the higher noise only,
+  // and seed 5's traps all fill at the higher noise, so neither enters a difference.
+  const std::map<std::pair<std::string, int>, std::vector<double>> etas = {
+      {{"0.01", 1}, {0.9, 0.85, 0.8, 0.3, 0.0}}, {{"0.01", 2}, {0.8, 0.8, 0.2, 0.1, 0.0}},
+      {{"0.01", 3}, {0.9, 0.9, 0.9, 0.9, 0.1}},  {{"0.01", 5}, {0.9, 0.8, 0.5, 0.1, 0.0}},
+      {{"0.05", 1}, {0.9, 0.6, 0.1, 0.0, 0.0}},  {{"0.05", 2}, {0.7, 0.75, 0.7, 0.05, 0.0}},
+      {{"0.05", 3}, {0.9, 0.85, 0.4, 0.0, 0.0}}, {{"0.05", 4}, {0.9, 0.1, 0.0, 0.0, 0.0}},
+      {{"0.05", 5}, {0.9, 0.9, 0.9, 0.9, 0.9}}};
+  std::ofstream csv(sweep / "sweep.csv");
+  csv << "point,trap.angle,species[0].noise.kick_eps,seed,status,eta_mean\n";
+  int point = 0;
+  std::map<std::pair<std::string, int>, double> expected;
+  for (const auto& [curve, eta] : etas) {
+    std::vector<metrics::SweepPoint> points;
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      csv << "p" << point++ << ',' << angles[a] << ',' << curve.first << ',' << curve.second
+          << ",complete," << eta[a] << '\n';
+      points.push_back({angles[a], eta[a]});
+    }
+    const metrics::CriticalAngle found = metrics::critical_angle(points);
+    if (found.found) expected[curve] = found.angle;
+  }
+  csv.close();
+  REQUIRE(expected.size() == etas.size() - 1);  // all but seed 5 at the higher noise
+
+  const render::ProgramOutput plotted =
+      render::run_plot_script({sweep.path().string(), "--what", "thetac-eps"});
+  INFO(plotted.output);
+  REQUIRE(plotted.exit_status == 0);
+
+  // One row per noise and seed, each seed's theta_c as the metrics layer finds it.
+  std::ifstream seeds(sweep / "plots" / "theta_c_seeds.csv");
+  std::string line;
+  std::getline(seeds, line);
+  CHECK(line == "species[0].noise.kick_eps,seed,theta_c,reason");
+  std::size_t rows = 0;
+  while (std::getline(seeds, line)) {
+    ++rows;
+    char eps[16] = {};
+    int seed = 0;
+    double angle = 0.0;
+    REQUIRE(std::sscanf(line.c_str(), "%15[^,],%d,%lf", eps, &seed, &angle) == 3);
+    const auto known = expected.find({eps, seed});
+    if (known == expected.end()) {
+      CHECK(std::isnan(angle));
+      CHECK_THAT(line, Catch::Contains("never falls below half"));
+    } else {
+      CHECK(angle == Approx(known->second).epsilon(1e-6));
+    }
+  }
+  CHECK(rows == etas.size());
+
+  // The difference at the higher noise, over the seeds that have theta_c at both: 1, 2 and 3.
+  std::vector<double> differences;
+  for (const int seed : {1, 2, 3}) {
+    differences.push_back(expected.at({"0.05", seed}) - expected.at({"0.01", seed}));
+  }
+  const double mean = (differences[0] + differences[1] + differences[2]) / 3.0;
+  double variance = 0.0;
+  for (const double d : differences) variance += (d - mean) * (d - mean) / 2.0;
+  std::ifstream paired(sweep / "plots" / "theta_c_paired.csv");
+  std::getline(paired, line);
+  CHECK(line ==
+        "species[0].noise.kick_eps,reference_species[0].noise.kick_eps,difference_mean,"
+        "difference_stderr,seeds_paired,seeds");
+  REQUIRE(std::getline(paired, line));
+  double eps = 0.0, reference = 0.0, difference = 0.0, error = 0.0;
+  int count = 0;
+  REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%d", &eps, &reference, &difference, &error,
+                      &count) == 5);
+  CHECK(eps == 0.05);
+  CHECK(reference == 0.01);
+  CHECK(difference == Approx(mean).epsilon(1e-6));
+  CHECK(error == Approx(std::sqrt(variance / 3.0)).epsilon(1e-6));
+  CHECK(count == 3);
+  CHECK_THAT(line, Catch::EndsWith(",1 2 3"));
+  CHECK_FALSE(std::getline(paired, line));
 }
 
 TEST_CASE("The plot script cautions about theta_c as the metrics layer does", "[render][plot]") {
