@@ -799,6 +799,10 @@ def write_critical_angles(sweep, out_dir, written):
             row += [f"{mean:.9g}", f"{error:.9g}", f"{found} of {seeds}" if seeds >= 2 else ""]
             writer.writerow(row)
     written.append(path)
+    # Files of an earlier plot into the same directory would otherwise outlive their data.
+    for stale in ("theta_c_seeds.csv", "theta_c_paired.csv"):
+        if os.path.isfile(os.path.join(out_dir, stale)):
+            os.remove(os.path.join(out_dir, stale))
     if not any(len(sweep.seed_curves(key)) >= 2 for key in sweep.keys()):
         return
     # Each seed's own theta_c, and the differences between curves seed by seed.
@@ -821,8 +825,8 @@ def write_paired_differences(sweep, out_dir, written):
     """theta_c_paired.csv: for every two curves with two seeds or more that both have a theta_c
     of their own, the mean and standard error of theta_c(curve) - theta_c(reference) over those
     seeds; the reference is the curve that comes first in the curves' order (the lower noise).
-    A difference seed by seed removes what a seed's initial state adds to both curves alike, so
-    its error is the one to quote when two curves share seeds."""
+    Where a seed starts from the same state in both curves (its rods are placed alike at every
+    noise), the difference seed by seed compares like with like."""
     found = {}
     for key in sweep.keys():
         found[key] = {seed: result["angle"] for seed, (result, _) in

@@ -332,6 +332,25 @@ TEST_CASE("The plot script gives each seed's theta_c and the differences seed by
   CHECK(count == 3);
   CHECK_THAT(line, Catch::EndsWith(",1 2 3"));
   CHECK_FALSE(std::getline(paired, line));
+  paired.close();
+
+  // Plotted again into the same directory from one seed, nothing is left of the seeds' files.
+  std::ofstream one_seed(sweep / "sweep.csv");
+  one_seed << "point,trap.angle,species[0].noise.kick_eps,seed,status,eta_mean\n";
+  for (std::size_t a = 0; a < angles.size(); ++a) {
+    for (const char* eps : {"0.01", "0.05"}) {
+      one_seed << "q" << a << eps << ',' << angles[a] << ',' << eps << ",1,complete,"
+               << etas.at({eps, 1})[a] << '\n';
+    }
+  }
+  one_seed.close();
+  const render::ProgramOutput again =
+      render::run_plot_script({sweep.path().string(), "--what", "thetac-eps"});
+  INFO(again.output);
+  REQUIRE(again.exit_status == 0);
+  CHECK(std::filesystem::exists(sweep / "plots" / "theta_c.csv"));
+  CHECK_FALSE(std::filesystem::exists(sweep / "plots" / "theta_c_seeds.csv"));
+  CHECK_FALSE(std::filesystem::exists(sweep / "plots" / "theta_c_paired.csv"));
 }
 
 TEST_CASE("The plot script cautions about theta_c as the metrics layer does", "[render][plot]") {
