@@ -413,6 +413,7 @@ class Sweep:
         # each seed's own curve, key -> seed -> angle -> [...]
         self.runs = {}
         self.seed_runs = {}
+        self.seed_results = {}  # seed_curves' answers, by key
         for angle, eta, key, state, level, duration, seed in zip(angles, etas, others, status,
                                                                  levelled, durations, seeds):
             if math.isnan(eta) or state != "complete":
@@ -456,10 +457,15 @@ class Sweep:
 
     def seed_curves(self, key):
         """seed -> (theta_c dict or None, reason) of each seed's own curve, seeds in numeric
-        order where they are numbers."""
-        per_seed = self.seed_runs.get(key, {})
-        order = sorted(per_seed, key=lambda s: (0, float(s), "") if is_number(s) else (1, 0.0, s))
-        return {seed: critical_angle(curve_points(per_seed[seed])) for seed in order}
+        order where they are numbers; found once per curve, as theta_c.csv, the figure and the
+        seeds' files all ask for them."""
+        if key not in self.seed_results:
+            per_seed = self.seed_runs.get(key, {})
+            order = sorted(per_seed,
+                           key=lambda s: (0, float(s), "") if is_number(s) else (1, 0.0, s))
+            self.seed_results[key] = {seed: critical_angle(curve_points(per_seed[seed]))
+                                      for seed in order}
+        return self.seed_results[key]
 
     def seed_critical_angles(self, key):
         """theta_c of each seed's own curve, as metrics::critical_angle_per_seed: (mean, standard
@@ -801,8 +807,9 @@ def write_critical_angles(sweep, out_dir, written):
     written.append(path)
     # Files of an earlier plot into the same directory would otherwise outlive their data.
     for stale in ("theta_c_seeds.csv", "theta_c_paired.csv"):
-        if os.path.isfile(os.path.join(out_dir, stale)):
-            os.remove(os.path.join(out_dir, stale))
+        stale_path = os.path.join(out_dir, stale)
+        if os.path.isfile(stale_path):
+            os.remove(stale_path)
     if not any(len(sweep.seed_curves(key)) >= 2 for key in sweep.keys()):
         return
     # Each seed's own theta_c, and the differences between curves seed by seed.
