@@ -1,7 +1,9 @@
 """Reading the points (noise, angle, seed) of runs listed in a `rodsort summarize --csv` table,
 for the scripts that gather runs kept only as such tables in docs/data."""
 import re
+import sys
 from pathlib import Path
+
 
 RUN_NAME = re.compile(r"eps([0-9.]+)-(\d+)-seed(\d+)$")
 ANGLE_NAME = re.compile(r"(?:^|_)angle-(\d+(?:\.\d+)?)(?:_|$)")
@@ -40,3 +42,19 @@ def split_argument(table):
         raise ValueError(f"{table}: the noise before '=' must be a number (EPS=TABLE.csv), "
                          f"not {eps!r}") from None
     return eps, path
+
+
+def require_columns(path, reader, wanted, expected=None):
+    """Exits, naming the table, where the header of a csv.DictReader lacks one of the wanted
+    columns; expected says what table was wanted (by default, one with those columns)."""
+    missing = [name for name in wanted if name not in (reader.fieldnames or [])]
+    if missing:
+        sys.exit(f"{path}: line 1: no column {', '.join(missing)} (expected "
+                 f"{expected or 'a table with the columns ' + ', '.join(wanted)})")
+
+
+def report_unnamed(path, unnamed):
+    """Says on stderr how many rows of a table were left out for want of a point in their name."""
+    if unnamed:
+        print(f"{path}: {unnamed} row(s) with no eps<EPS>-<ANGLE>-seed<SEED> name (or, given as "
+              f"EPS=, no angle-<ANGLE>), left out", file=sys.stderr)
