@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "metrics/kinematics.hpp"
 #include "metrics/sample_statistics.hpp"
@@ -79,6 +80,25 @@ double rotational_diffusion_fit(const std::vector<double>& lag_time,
                                 const std::vector<double>& heading_msd) {
   const LineFit line = fit_line(lag_time, heading_msd);
   return lag_time.size() >= 2 && line.determined ? 0.5 * line.slope : std::nan("");
+}
+
+double turn_rate(const Track& track) {
+  if (track.heading.size() < 2) return std::nan("");
+  return (track.heading.back() - track.heading.front()) / (track.time.back() - track.time.front());
+}
+
+Track without_steady_turn(const Track& track, double rate) {
+  Track turned = track;
+  for (std::size_t i = 0; i < turned.heading.size(); ++i) {
+    turned.heading[i] -= rate * (track.time[i] - track.time.front());
+  }
+  return turned;
+}
+
+bool circles(double rate, double duration, double diffusion_about_turn) {
+  const double net_turn = std::abs(rate) * duration;
+  return net_turn > 2.0 * std::numbers::pi &&
+         net_turn > 5.0 * std::sqrt(2.0 * std::max(diffusion_about_turn, 0.0) * duration);
 }
 
 RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity_series,

@@ -47,6 +47,22 @@ LagStatistics lag_statistics(const std::vector<Track>& tracks, const std::vector
 double rotational_diffusion_fit(const std::vector<double>& lag_time,
                                 const std::vector<double>& heading_msd);
 
+/// The steady part of the heading's change: the net turn from the first sample to the last over
+/// the time between them [rad/s], counter-clockwise positive. A rod whose heading diffuses turns
+/// by about sqrt(2 D_r T) over a track of duration T, so this rate falls as 1/sqrt(T); a rod that
+/// circles keeps it. NaN for a track of fewer than two samples.
+double turn_rate(const Track& track);
+
+/// The track with a steady turn taken out of its heading: phi(t) - rate (t - t_first). A steady
+/// turn makes the heading's MSD grow as rate^2 t^2, which a line c + 2 D_r t reads as a large D_r;
+/// the heading's MSD of this track is the diffusion about the turn alone.
+Track without_steady_turn(const Track& track, double rate);
+
+/// Whether a rod circles: its net turn over the track, |rate| T, exceeds one full turn and five
+/// times the sqrt(2 D T) that a heading diffusing with `diffusion_about_turn` [rad^2/s] would
+/// reach by chance (a chance below 1e-6 for a rod that does not circle).
+bool circles(double rate, double duration, double diffusion_about_turn);
+
 /// Runs and tumbles from back-to-back windows: a window runs when its axial velocity exceeds the
 /// threshold, tumbles otherwise; consecutive windows of one kind make one run or one tumble.
 /// Segments cut by the start or the end of a series are counted in the fraction but not in the

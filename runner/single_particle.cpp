@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -161,6 +162,9 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
     if (w * window_samples < samples) all_lags.push_back(w * window_samples);
   }
   std::vector<double> every_velocity, per_rod_speed, per_rod_deviation, per_rod_diffusion;
+  // A rod that circles turns steadily: its turn rate, D_r about that turn, and whether it circles.
+  std::vector<double> per_rod_turn_rate, per_rod_abs_turn_rate, per_rod_diffusion_about_turn;
+  std::vector<bool> per_rod_circles;
   std::vector<std::vector<double>> series;
   std::vector<metrics::Track> tracks;
   for (const RodResult& rod : rods) {
@@ -170,6 +174,15 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
     per_rod_deviation.push_back(speed.deviation);
     const metrics::LagStatistics fit = metrics::lag_statistics({rod.track}, fit_lags);
     per_rod_diffusion.push_back(metrics::rotational_diffusion_fit(fit.lag_time, fit.heading_msd));
+    const double turn_rate = metrics::turn_rate(rod.track);
+    const metrics::LagStatistics about_turn =
+        metrics::lag_statistics({metrics::without_steady_turn(rod.track, turn_rate)}, fit_lags);
+    const double diffusion_about_turn =
+        metrics::rotational_diffusion_fit(about_turn.lag_time, about_turn.heading_msd);
+    per_rod_turn_rate.push_back(turn_rate);
+    per_rod_abs_turn_rate.push_back(std::abs(turn_rate));
+    per_rod_diffusion_about_turn.push_back(diffusion_about_turn);
+    per_rod_circles.push_back(metrics::circles(turn_rate, request.duration, diffusion_about_turn));
     series.push_back(rod.back_to_back);
     tracks.push_back(rod.track);
   }
@@ -180,6 +193,10 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   const metrics::SampleStatistics speed = metrics::sample_statistics(per_rod_speed);
   const metrics::SampleStatistics diffusion = metrics::sample_statistics(per_rod_diffusion);
   const metrics::SampleStatistics spread = metrics::sample_statistics(every_velocity);
+  const metrics::SampleStatistics abs_turn_rate = metrics::sample_statistics(per_rod_abs_turn_rate);
+  const metrics::SampleStatistics diffusion_about_turn =
+      metrics::sample_statistics(per_rod_diffusion_about_turn);
+  const long circling_rods = std::count(per_rod_circles.begin(), per_rod_circles.end(), true);
   std::int64_t kicks = 0;
   for (const RodResult& rod : rods) kicks += rod.kicks;
   const metrics::Histogram histogram = velocity_histogram(every_velocity);
@@ -206,6 +223,16 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                 diffusion.mean, diffusion.standard_error, window, window * kFitMaxWindows,
                 1.0 / diffusion.mean, speed.mean / diffusion.mean);
   out << line;
+  std::snprintf(line, sizeof line,
+                "  turning   %ld of %d rods circle (net turn above one turn and 5 sqrt(2 D T)); "
+                "mean |turn rate| %.3g rad/s; D_r about the turn %.4f +- %.4f rad^2/s\n",
+                circling_rods, request.rods, abs_turn_rate.mean, diffusion_about_turn.mean,
+                diffusion_about_turn.standard_error);
+  out << line;
+  if (circling_rods > 0) {
+    out << "            (D_r above counts the circling rods' steady turn as diffusion; D_r about "
+           "the turn does not)\n";
+  }
   std::snprintf(line, sizeof line,
                 "  running   %.3f of windows (V_x > %.3g mm/s); mean run %.3g s, mean tumble "
                 "%.3g s (%ld runs, %ld tumbles)\n",
@@ -254,7 +281,10 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                       "valley",
                       "thin_end_down_fraction",
                       "kicks_per_s",
-                      "cpu_s"};
+                      "cpu_s",
+                      "turn_rate_abs_rad_s",
+                      "Dr_about_turn_rad2_s",
+                      "circling_rods"};
     summary.rows.push_back({species_name,
                             std::to_string(request.rods),
                             number(request.duration),
@@ -280,15 +310,26 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                             number(peaks.valley),
                             number(thin_end_down),
                             number(static_cast<double>(kicks) / measured),
-                            number(cpu)});
+                            number(cpu),
+                            number(abs_turn_rate.mean),
+                            number(diffusion_about_turn.mean),
+                            std::to_string(circling_rods)});
     write_file_atomically(request.output / "summary.csv", csv_text(summary));
 
     CsvTable per_rod;
-    per_rod.header = {"rod", "seed", "v0_mm_s", "vx_sd_mm_s", "Dr_rad2_s"};
+    per_rod.header = {"rod",
+                      "seed",
+                      "v0_mm_s",
+                      "vx_sd_mm_s",
+                      "Dr_rad2_s",
+                      "turn_rate_rad_s",
+                      "Dr_about_turn_rad2_s",
+                      "circles"};
     for (std::size_t r = 0; r < rods.size(); ++r) {
-      per_rod.rows.push_back({std::to_string(r), std::to_string(model.seed + r),
-                              number(per_rod_speed[r]), number(per_rod_deviation[r]),
-                              number(per_rod_diffusion[r])});
+      per_rod.rows.push_back(
+          {std::to_string(r), std::to_string(model.seed + r), number(per_rod_speed[r]),
+           number(per_rod_deviation[r]), number(per_rod_diffusion[r]), number(per_rod_turn_rate[r]),
+           number(per_rod_diffusion_about_turn[r]), per_rod_circles[r] ? "1" : "0"});
     }
     write_file_atomically(request.output / "per_rod.csv", csv_text(per_rod));
 

@@ -116,6 +116,50 @@ TEST_CASE("lag statistics of a steady turn: ballistic MSD, cos correlation, and 
              WithinRel(0.3, 1e-9));
 }
 
+TEST_CASE("a steady turn is told from diffusion: turn rate, D_r about the turn, circling",
+          "[metrics][single]") {
+  // A heading that turns at `omega` and diffuses with D about the turn, 40 s sampled every 0.01 s.
+  const double dt = 0.01, diffusion = 0.1;
+  const auto diffusing_track = [&](double omega) {
+    std::mt19937_64 random(7);
+    std::normal_distribution<double> normal;
+    metrics::Track track = steady_track(0.0, omega, dt, 4001);
+    double walk = 0.0;
+    for (double& phi : track.heading) {
+      phi += walk;
+      walk += std::sqrt(2.0 * diffusion * dt) * normal(random);
+    }
+    return track;
+  };
+  const std::vector<int> lags = {7, 14, 21, 28, 35, 42, 49, 56, 63, 70};
+  const auto fitted = [&](const metrics::Track& track) {
+    const metrics::LagStatistics statistics = metrics::lag_statistics({track}, lags);
+    return metrics::rotational_diffusion_fit(statistics.lag_time, statistics.heading_msd);
+  };
+
+  const metrics::Track circling = diffusing_track(3.0);
+  const double rate = metrics::turn_rate(circling);
+  // The walk adds sqrt(2 D T) ~ 2.8 rad to the 120 rad of the turn over 40 s.
+  CHECK_THAT(rate, WithinAbs(3.0, 0.15));
+  // Read as diffusion, the turn gives a D_r some forty times too large...
+  CHECK(fitted(circling) > 20.0 * diffusion);
+  // ... and taken out first, the diffusion about it (one 40 s walk: within 30%).
+  const double about_turn = fitted(metrics::without_steady_turn(circling, rate));
+  CHECK_THAT(about_turn, WithinRel(diffusion, 0.3));
+  CHECK(metrics::circles(rate, 40.0, about_turn));
+
+  const metrics::Track diffusing = diffusing_track(0.0);
+  const double drift = metrics::turn_rate(diffusing);
+  CHECK(std::abs(drift) < 0.3);
+  CHECK_FALSE(
+      metrics::circles(drift, 40.0, fitted(metrics::without_steady_turn(diffusing, drift))));
+  // A rod that keeps its heading exactly does not circle, however small its D.
+  CHECK_FALSE(metrics::circles(1e-12, 40.0, 0.0));
+  // Over one full turn, steadily and without diffusion, it does.
+  CHECK(metrics::circles(0.2, 40.0, 0.0));
+  CHECK(std::isnan(metrics::turn_rate(metrics::Track{})));
+}
+
 TEST_CASE("runs and tumbles count only segments bounded on both sides", "[metrics][single]") {
   // run (cut) | tumble x3 | run x2 | tumble (cut)
   const std::vector<double> series = {5, 5, 0, 0.5, 0, 6, 7, 0};

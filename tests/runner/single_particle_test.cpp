@@ -38,7 +38,14 @@ TEST_CASE("rodsort single writes the study of one species", "[runner][single]") 
   CHECK(summary.numbers(*summary.column("thin_end_down_fraction"))[0] > 0.8);
   CHECK_THAT(result.out, Catch::Contains("thin end down in"));
   CHECK(summary.numbers(*summary.column("rods"))[0] == 3.0);
-  CHECK(read_csv(out / "per_rod.csv").rows.size() == 3);
+  // Rod A keeps a persistent heading: none of its rods circles.
+  REQUIRE(summary.column("circling_rods"));
+  CHECK(summary.numbers(*summary.column("circling_rods"))[0] == 0.0);
+  CHECK_THAT(result.out, Catch::Contains("0 of 3 rods circle"));
+  const CsvTable per_rod = read_csv(out / "per_rod.csv");
+  CHECK(per_rod.rows.size() == 3);
+  CHECK(per_rod.column("turn_rate_rad_s"));
+  CHECK(per_rod.column("Dr_about_turn_rad2_s"));
   const CsvTable lags = read_csv(out / "lags.csv");
   const auto msd = lags.numbers(*lags.column("position_msd_mm2"));
   REQUIRE(msd.size() > 10);
