@@ -163,7 +163,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   }
   std::vector<double> every_velocity, per_rod_speed, per_rod_deviation, per_rod_diffusion;
   // A rod that circles turns steadily: its turn rate, D_r about that turn, and whether it circles.
-  std::vector<double> per_rod_turn_rate, per_rod_abs_turn_rate, per_rod_diffusion_about_turn;
+  std::vector<double> per_rod_turn_rate, per_rod_diffusion_about_turn;
   std::vector<bool> per_rod_circles;
   std::vector<std::vector<double>> series;
   std::vector<metrics::Track> tracks;
@@ -180,7 +180,6 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
     const double diffusion_about_turn =
         metrics::rotational_diffusion_fit(about_turn.lag_time, about_turn.heading_msd);
     per_rod_turn_rate.push_back(turn_rate);
-    per_rod_abs_turn_rate.push_back(std::abs(turn_rate));
     per_rod_diffusion_about_turn.push_back(diffusion_about_turn);
     per_rod_circles.push_back(metrics::circles(turn_rate, request.duration, diffusion_about_turn));
     series.push_back(rod.back_to_back);
@@ -193,7 +192,9 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   const metrics::SampleStatistics speed = metrics::sample_statistics(per_rod_speed);
   const metrics::SampleStatistics diffusion = metrics::sample_statistics(per_rod_diffusion);
   const metrics::SampleStatistics spread = metrics::sample_statistics(every_velocity);
-  const metrics::SampleStatistics abs_turn_rate = metrics::sample_statistics(per_rod_abs_turn_rate);
+  double mean_abs_turn_rate = 0.0;
+  for (const double rate : per_rod_turn_rate) mean_abs_turn_rate += std::abs(rate);
+  mean_abs_turn_rate /= static_cast<double>(per_rod_turn_rate.size());
   const metrics::SampleStatistics diffusion_about_turn =
       metrics::sample_statistics(per_rod_diffusion_about_turn);
   const long circling_rods = std::count(per_rod_circles.begin(), per_rod_circles.end(), true);
@@ -226,7 +227,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   std::snprintf(line, sizeof line,
                 "  turning   %ld of %d rods circle (net turn above one turn and 5 sqrt(2 D T)); "
                 "mean |turn rate| %.3g rad/s; D_r about the turn %.4f +- %.4f rad^2/s\n",
-                circling_rods, request.rods, abs_turn_rate.mean, diffusion_about_turn.mean,
+                circling_rods, request.rods, mean_abs_turn_rate, diffusion_about_turn.mean,
                 diffusion_about_turn.standard_error);
   out << line;
   if (circling_rods > 0) {
@@ -311,7 +312,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                             number(thin_end_down),
                             number(static_cast<double>(kicks) / measured),
                             number(cpu),
-                            number(abs_turn_rate.mean),
+                            number(mean_abs_turn_rate),
                             number(diffusion_about_turn.mean),
                             std::to_string(circling_rods)});
     write_file_atomically(request.output / "summary.csv", csv_text(summary));
