@@ -58,6 +58,12 @@ metrics::Histogram velocity_histogram(const std::vector<double>& velocities) {
   return histogram;
 }
 
+/// D_r of one track from its heading's MSD at the given lags (in samples).
+double rotational_diffusion_of(const metrics::Track& track, const std::vector<int>& lags) {
+  const metrics::LagStatistics statistics = metrics::lag_statistics({track}, lags);
+  return metrics::rotational_diffusion_fit(statistics.lag_time, statistics.heading_msd);
+}
+
 struct RodResult {
   metrics::Track track;
   std::vector<double> velocities;    ///< overlapping windows, one per sample
@@ -172,13 +178,10 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
     const metrics::SampleStatistics speed = metrics::sample_statistics(rod.velocities);
     per_rod_speed.push_back(speed.mean);
     per_rod_deviation.push_back(speed.deviation);
-    const metrics::LagStatistics fit = metrics::lag_statistics({rod.track}, fit_lags);
-    per_rod_diffusion.push_back(metrics::rotational_diffusion_fit(fit.lag_time, fit.heading_msd));
+    per_rod_diffusion.push_back(rotational_diffusion_of(rod.track, fit_lags));
     const double turn_rate = metrics::turn_rate(rod.track);
-    const metrics::LagStatistics about_turn =
-        metrics::lag_statistics({metrics::without_steady_turn(rod.track, turn_rate)}, fit_lags);
     const double diffusion_about_turn =
-        metrics::rotational_diffusion_fit(about_turn.lag_time, about_turn.heading_msd);
+        rotational_diffusion_of(metrics::without_steady_turn(rod.track, turn_rate), fit_lags);
     per_rod_turn_rate.push_back(turn_rate);
     per_rod_diffusion_about_turn.push_back(diffusion_about_turn);
     per_rod_circles.push_back(metrics::circles(turn_rate, request.duration, diffusion_about_turn));
