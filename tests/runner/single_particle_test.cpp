@@ -71,11 +71,10 @@ TEST_CASE("rod A stops and goes at the experiments' speed when the lid is out of
   REQUIRE(reference.IsMap());
   TempDirectory scratch;
   const auto out = scratch / "study";
-  const auto result = run_rodsort(
-      {"single", kSingleRods, "--species", "A", "--set",
-       "drive.gap=" + reference["gap_mm"].as<std::string>(), "--rods", "12", "--duration", "20",
-       "-o", out.string()},
-      scratch.path());
+  const auto result = run_rodsort({"single", kSingleRods, "--species", "A", "--set",
+                                   "drive.gap=" + reference["gap_mm"].as<std::string>(), "--rods",
+                                   "12", "--duration", "20", "-o", out.string()},
+                                  scratch.path());
   INFO(result.err);
   REQUIRE(result.status == kExitOk);
   const CsvTable summary = read_csv(out / "summary.csv");
