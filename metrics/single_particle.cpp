@@ -102,11 +102,18 @@ bool circles(double rate, double duration, double diffusion_about_turn) {
 }
 
 RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity_series,
-                                double window, double threshold) {
+                                double window, double threshold,
+                                const std::vector<std::vector<double>>& boundary_headings) {
+  assert(boundary_headings.empty() || boundary_headings.size() == velocity_series.size());
   RunsAndTumbles result;
   result.threshold = threshold;
   long windows = 0, running = 0, run_windows = 0, tumble_windows = 0;
-  for (const std::vector<double>& series : velocity_series) {
+  double run_turn_square = 0.0, tumble_turn_square = 0.0;
+  for (std::size_t k = 0; k < velocity_series.size(); ++k) {
+    const std::vector<double>& series = velocity_series[k];
+    const std::vector<double>* headings =
+        boundary_headings.empty() ? nullptr : &boundary_headings[k];
+    assert(headings == nullptr || series.empty() || headings->size() == series.size() + 1);
     std::size_t start = 0;
     for (std::size_t i = 0; i < series.size(); ++i) {
       const bool runs = series[i] > threshold;
@@ -117,27 +124,42 @@ RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity
       // A segment [start, i] ends here; only those bounded on both sides by the other kind count.
       if (start > 0 && !last) {
         const long length = static_cast<long>(i - start + 1);
+        const double turn = headings ? std::remainder((*headings)[i + 1] - (*headings)[start],
+                                                      2.0 * std::numbers::pi)
+                                     : 0.0;
         if (runs) {
           ++result.runs;
           run_windows += length;
+          run_turn_square += turn * turn;
         } else {
           ++result.tumbles;
           tumble_windows += length;
+          tumble_turn_square += turn * turn;
         }
       }
       start = i + 1;
     }
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  result.running_fraction =
-      windows > 0 ? static_cast<double>(running) / static_cast<double>(windows) : nan;
-  result.mean_run =
-      result.runs > 0 ? window * static_cast<double>(run_windows) / static_cast<double>(result.runs)
-                      : nan;
-  result.mean_tumble = result.tumbles > 0 ? window * static_cast<double>(tumble_windows) /
-                                                static_cast<double>(result.tumbles)
-                                          : nan;
+  const auto per = [nan](double total, long count) {
+    return count > 0 ? total / static_cast<double>(count) : nan;
+  };
+  result.running_fraction = per(static_cast<double>(running), windows);
+  result.mean_run = window * per(static_cast<double>(run_windows), result.runs);
+  result.mean_tumble = window * per(static_cast<double>(tumble_windows), result.tumbles);
+  const bool turns = !boundary_headings.empty();
+  result.run_turn_rms = turns ? std::sqrt(per(run_turn_square, result.runs)) : nan;
+  result.tumble_turn_rms = turns ? std::sqrt(per(tumble_turn_square, result.tumbles)) : nan;
   return result;
+}
+
+std::vector<double> window_boundary_headings(const Track& track, int lag) {
+  assert(lag > 0);
+  std::vector<double> headings;
+  const std::size_t n = track.heading.size();
+  const std::size_t step = static_cast<std::size_t>(lag);
+  for (std::size_t i = 0; i < n; i += step) headings.push_back(track.heading[i]);
+  return headings;
 }
 
 double quantile(std::vector<double> values, double q) {

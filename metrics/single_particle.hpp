@@ -67,6 +67,13 @@ bool circles(double rate, double duration, double diffusion_about_turn);
 /// threshold, tumbles otherwise; consecutive windows of one kind make one run or one tumble.
 /// Segments cut by the start or the end of a series are counted in the fraction but not in the
 /// durations.
+///
+/// With the heading at every window boundary (`boundary_headings[k]` has one more entry than
+/// `velocity_series[k]`: the heading where each window starts, and where the last ends), the
+/// turn over each complete segment is its heading change from its first window's start to its
+/// last window's end, taken to (-pi, pi]: how far a tumble turns the rod between the run before
+/// and the run after. A tumble that picks a new direction at random turns it by pi / sqrt(3)
+/// (104 degrees) RMS; a pause turns it no more than a run of the same length does.
 struct RunsAndTumbles {
   double threshold = 0.0;         ///< [mm/s]
   double running_fraction = 0.0;  ///< of all windows
@@ -74,9 +81,16 @@ struct RunsAndTumbles {
   double mean_tumble = 0.0;       ///< duration of complete tumbles [s]; NaN when there is none
   long runs = 0;                  ///< complete runs
   long tumbles = 0;               ///< complete tumbles
+  double run_turn_rms = 0.0;      ///< RMS turn over a complete run [rad]; NaN without headings
+  double tumble_turn_rms = 0.0;   ///< RMS turn over a complete tumble [rad]; NaN without headings
 };
 RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity_series,
-                                double window, double threshold);
+                                double window, double threshold,
+                                const std::vector<std::vector<double>>& boundary_headings = {});
+
+/// The heading at every boundary of back-to-back windows of `lag` samples, as
+/// axial_velocities(track, lag, lag) lays them: samples 0, lag, 2 lag, ... while a window fits.
+std::vector<double> window_boundary_headings(const Track& track, int lag);
 
 /// The q-quantile (0..1) of the values, by linear interpolation between order statistics.
 double quantile(std::vector<double> values, double q);

@@ -171,7 +171,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   // A rod that circles turns steadily: its turn rate, D_r about that turn, and whether it circles.
   std::vector<double> per_rod_turn_rate, per_rod_diffusion_about_turn;
   std::vector<bool> per_rod_circles;
-  std::vector<std::vector<double>> series;
+  std::vector<std::vector<double>> series, boundary_headings;
   std::vector<metrics::Track> tracks;
   for (const RodResult& rod : rods) {
     every_velocity.insert(every_velocity.end(), rod.velocities.begin(), rod.velocities.end());
@@ -186,12 +186,14 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
     per_rod_diffusion_about_turn.push_back(diffusion_about_turn);
     per_rod_circles.push_back(metrics::circles(turn_rate, request.duration, diffusion_about_turn));
     series.push_back(rod.back_to_back);
+    boundary_headings.push_back(metrics::window_boundary_headings(rod.track, window_samples));
     tracks.push_back(rod.track);
   }
   const double threshold = request.run_threshold >= 0.0
                                ? request.run_threshold
                                : 0.5 * metrics::quantile(every_velocity, 0.9);
-  const metrics::RunsAndTumbles runs = metrics::runs_and_tumbles(series, window, threshold);
+  const metrics::RunsAndTumbles runs =
+      metrics::runs_and_tumbles(series, window, threshold, boundary_headings);
   const metrics::SampleStatistics speed = metrics::sample_statistics(per_rod_speed);
   const metrics::SampleStatistics diffusion = metrics::sample_statistics(per_rod_diffusion);
   const metrics::SampleStatistics spread = metrics::sample_statistics(every_velocity);
@@ -243,6 +245,12 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                 runs.running_fraction, threshold, runs.mean_run, runs.mean_tumble, runs.runs,
                 runs.tumbles);
   out << line;
+  std::snprintf(line, sizeof line,
+                "  turns     %.1f deg RMS over a run, %.1f deg RMS over a tumble (a new direction "
+                "at random: 103.9)\n",
+                runs.run_turn_rms * 180.0 / std::numbers::pi,
+                runs.tumble_turn_rms * 180.0 / std::numbers::pi);
+  out << line;
   std::snprintf(line, sizeof line, "  tilt      thin end down in %.3f of frames\n", thin_end_down);
   out << line;
   std::snprintf(line, sizeof line,
@@ -288,7 +296,9 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                       "cpu_s",
                       "turn_rate_abs_rad_s",
                       "Dr_about_turn_rad2_s",
-                      "circling_rods"};
+                      "circling_rods",
+                      "run_turn_rms_rad",
+                      "tumble_turn_rms_rad"};
     summary.rows.push_back({species_name,
                             std::to_string(request.rods),
                             number(request.duration),
@@ -317,7 +327,9 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                             number(cpu),
                             number(mean_abs_turn_rate),
                             number(diffusion_about_turn.mean),
-                            std::to_string(circling_rods)});
+                            std::to_string(circling_rods),
+                            number(runs.run_turn_rms),
+                            number(runs.tumble_turn_rms)});
     write_file_atomically(request.output / "summary.csv", csv_text(summary));
 
     CsvTable per_rod;

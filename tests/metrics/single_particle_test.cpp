@@ -172,6 +172,49 @@ TEST_CASE("runs and tumbles count only segments bounded on both sides", "[metric
   CHECK(std::isnan(metrics::runs_and_tumbles({{9, 9, 9}}, 0.07, 1.0).mean_run));
 }
 
+TEST_CASE("runs and tumbles measure the turn over each complete segment", "[metrics][single]") {
+  constexpr double kPi = std::numbers::pi;
+  // run (cut) | tumble x2 | run x2 | tumble | run x1 | tumble (cut)
+  const std::vector<double> series = {5, 0, 0, 6, 7, 0, 8, 0};
+  // Headings at the nine window boundaries. The first tumble turns the rod by 1.5 pi, which is
+  // -0.5 pi taken to (-pi, pi]; the second by 0.3; the complete runs by 0.1 and -0.2. The cut
+  // segments at either end turn it by 2.0 and 1.0, which must not count.
+  const std::vector<double> headings = {0.0,
+                                        2.0,
+                                        2.0 + 0.7,
+                                        2.0 + 1.5 * kPi,
+                                        2.05 + 1.5 * kPi,
+                                        2.1 + 1.5 * kPi,
+                                        2.4 + 1.5 * kPi,
+                                        2.2 + 1.5 * kPi,
+                                        3.2 + 1.5 * kPi};
+  const metrics::RunsAndTumbles r = metrics::runs_and_tumbles({series}, 0.07, 1.0, {headings});
+  CHECK(r.runs == 2);
+  CHECK(r.tumbles == 2);
+  CHECK_THAT(r.tumble_turn_rms, WithinAbs(std::sqrt((0.25 * kPi * kPi + 0.09) / 2.0), 1e-12));
+  CHECK_THAT(r.run_turn_rms, WithinAbs(std::sqrt((0.01 + 0.04) / 2.0), 1e-12));
+  // Without headings there are no turns; with headings but no complete tumble, none either.
+  CHECK(std::isnan(metrics::runs_and_tumbles({series}, 0.07, 1.0).tumble_turn_rms));
+  CHECK(std::isnan(metrics::runs_and_tumbles({{9, 9}}, 0.07, 1.0, {{0.0, 0.1, 0.2}}).run_turn_rms));
+}
+
+TEST_CASE("window_boundary_headings lays the boundaries of back-to-back windows",
+          "[metrics][single]") {
+  metrics::Track track;
+  for (int i = 0; i < 10; ++i) {
+    track.time.push_back(0.01 * i);
+    track.position.emplace_back(0.1 * i, 0.0);
+    track.heading.push_back(0.5 * i);
+    track.tilt.push_back(-0.1);
+  }
+  // Windows of 3 samples: 0-3, 3-6, 6-9; their boundaries are samples 0, 3, 6 and 9.
+  CHECK(metrics::axial_velocities(track, 3, 3).size() == 3);
+  CHECK(metrics::window_boundary_headings(track, 3) == std::vector<double>{0.0, 1.5, 3.0, 4.5});
+  // Windows of 4: 0-4 and 4-8; sample 9 is past the last window's end.
+  CHECK(metrics::axial_velocities(track, 4, 4).size() == 2);
+  CHECK(metrics::window_boundary_headings(track, 4) == std::vector<double>{0.0, 2.0, 4.0});
+}
+
 TEST_CASE("quantile interpolates between order statistics", "[metrics][single]") {
   CHECK_THAT(metrics::quantile({4, 1, 3, 2, 5}, 0.9), WithinAbs(4.6, 1e-12));
   CHECK_THAT(metrics::quantile({7}, 0.5), WithinAbs(7.0, 1e-12));
