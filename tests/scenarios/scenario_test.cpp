@@ -287,6 +287,26 @@ TEST_CASE("RnT rods with the collision kick at a large dt are warned about", "[s
   CHECK(load_scenario_text("species: [{name: A, count: 10}]\n", "k.yaml").diagnostics.empty());
 }
 
+TEST_CASE("RnT rods with the turns corrected in full at a large dt are warned about",
+          "[scenario]") {
+  const std::string rnt =
+      "species: [{name: R, shape: {preset: RnT}, count: 10, noise: {kick_eps: 0}}]\n";
+  const LoadResult coarse = load_scenario_text(rnt + "run: {turn_correction: full}\n", "g.yaml");
+  REQUIRE(coarse.ok());
+  REQUIRE(coarse.diagnostics.size() == 1);
+  CHECK(coarse.diagnostics[0].severity == Severity::warning);
+  CHECK_THAT(coarse.diagnostics[0].to_string(),
+             Catch::Contains("g.yaml:2:24: warning: run.turn_correction: full at run.dt = 1e-4 s "
+                             "locks RnT rods (R) in a slow glide"));
+  // At 1.25e-5 s the RnT runs again; by default (tenth) it runs at every dt; rod A never glides.
+  CHECK(load_scenario_text(rnt + "run: {turn_correction: full, dt: 1.25e-5}\n", "g.yaml")
+            .diagnostics.empty());
+  CHECK(load_scenario_text(rnt, "g.yaml").diagnostics.empty());
+  CHECK(load_scenario_text("species: [{name: A, count: 10}]\nrun: {turn_correction: full}\n",
+                           "g.yaml")
+            .diagnostics.empty());
+}
+
 TEST_CASE("run.contact_solver: exact solves lone rods exactly and warns for crowds", "[scenario]") {
   const Scenario sweeps = load_ok("species: [{name: A, count: 1}]\nbox: {size: 30}\n");
   CHECK_FALSE(sweeps.model.exact_contact_solver);
