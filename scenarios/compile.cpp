@@ -152,13 +152,17 @@ std::int64_t to_steps(const Sourced<double>& interval, double dt, Diagnostics& d
   return steps;
 }
 
+bool is_rnt_preset(const SpeciesSpec& species) {
+  return species.shape.kind == ShapeSpec::Kind::preset && species.shape.preset.value == "RnT";
+}
+
 /// RnT's rotational diffusion under the collision kick has not converged at dt = 1e-4 s (40% low,
 /// docs/model.md, "Step-tapered rods"); from 5e-5 s on it is within 10-20%.
 void warn_unconverged_kick(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
   constexpr double kLargestConvergedDt = 5.0e-5;  // [s]
-  const bool rnt =
-      species.shape.kind == ShapeSpec::Kind::preset && species.shape.preset.value == "RnT";
-  if (!rnt || species.kick_eps.value == 0.0 || dt <= kLargestConvergedDt * (1.0 + 1e-9)) return;
+  if (!is_rnt_preset(species) || species.kick_eps.value == 0.0 ||
+      dt <= kLargestConvergedDt * (1.0 + 1e-9))
+    return;
   diagnostics.warning(species.kick_eps.where, species.kick_eps.path,
                       "the collision kick's rotational diffusion of RnT rods has not converged at "
                       "run.dt = " +
@@ -175,8 +179,7 @@ void warn_rnt_glide(const ScenarioSpec& spec, Diagnostics& diagnostics) {
   if (spec.turn_correction.value != "full" || spec.dt.value <= kLargestRunningDt * (1.0 + 1e-9))
     return;
   for (const SpeciesSpec& species : spec.species) {
-    if (species.shape.kind != ShapeSpec::Kind::preset || species.shape.preset.value != "RnT")
-      continue;
+    if (!is_rnt_preset(species)) continue;
     diagnostics.warning(spec.turn_correction.where, spec.turn_correction.path,
                         "full at run.dt = " + format_real(spec.dt.value) + " s locks RnT rods (" +
                             species.name.value +
