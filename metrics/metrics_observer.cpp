@@ -1,5 +1,6 @@
 #include "metrics/metrics_observer.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstdio>
@@ -32,23 +33,34 @@ MetricsObserver::MetricsObserver(MetricsConfig config) : config_(std::move(confi
   assert(config_.window > 0.0);
 }
 
+bool MetricsObserver::has_trap() const { return config_.inside && config_.trap_area > 0.0; }
+
+double MetricsObserver::history() const {
+  return has_trap() ? std::max(config_.window, config_.held_lag) : config_.window;
+}
+
+template <class Stored>
+const Stored* MetricsObserver::earlier_than(std::deque<Stored>& frames, double time, double span) {
+  // Times come from step counts times dt, or back from 9 printed digits: allow a small slack.
+  const double latest_start = time - span + 1e-3 * span;
+  // Frames before the latest one at or before it are no longer needed by anyone.
+  while (frames.size() >= 2 && frames[1].time <= latest_start) frames.pop_front();
+  return !frames.empty() && frames.front().time <= latest_start ? &frames.front() : nullptr;
+}
+
 std::optional<MetricsRow> MetricsObserver::observe(const engine::Frame& frame) {
   assert(recent_.empty() || frame.time > recent_.back().time);
-  // Times come from step counts times dt, or back from 9 printed digits: allow a small slack.
-  const double latest_start = frame.time - config_.window + 1e-3 * config_.window;
-  // The latest frame at or before t - tau; frames before it are no longer needed by anyone.
-  while (recent_.size() >= 2 && recent_[1].time <= latest_start) recent_.pop_front();
-  const bool have_earlier = !recent_.empty() && recent_.front().time <= latest_start;
-  const engine::Frame* earlier = have_earlier ? &recent_.front() : nullptr;
+  const engine::Frame* earlier = earlier_than(recent_, frame.time, config_.window);
+  const Positions* held_since =
+      has_trap() ? earlier_than(held_history_, frame.time, config_.held_lag) : nullptr;
   std::optional<MetricsRow> row;
   if (earlier != nullptr) {
     assert(earlier->rods.size() == frame.rods.size());
     const std::vector<double> speeds = window_speeds(*earlier, frame);
     const std::vector<bool> stationary =
         stationary_flags(speeds, config_.stationary_speed_threshold);
-    const bool has_trap = config_.inside && config_.trap_area > 0.0;
     const std::vector<bool> inside =
-        has_trap ? inside_flags(frame, config_.inside) : std::vector<bool>(frame.rods.size());
+        has_trap() ? inside_flags(frame, config_.inside) : std::vector<bool>(frame.rods.size());
     row.emplace();
     row->time = frame.time;
     row->window = frame.time - earlier->time;
@@ -58,7 +70,7 @@ std::optional<MetricsRow> MetricsObserver::observe(const engine::Frame& frame) {
     const int species_count = static_cast<int>(config_.species_names.size());
     row->counts = count_trapping(frame, stationary, inside, species_count);
     row->stationary = stationary;
-    if (has_trap) {
+    if (has_trap()) {
       row->efficiency = trapping_efficiency(row->counts, config_.species_area, config_.trap_area);
     } else {
       constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -67,11 +79,26 @@ std::optional<MetricsRow> MetricsObserver::observe(const engine::Frame& frame) {
       row->efficiency.eta_trap_species.assign(species_count, kNaN);
     }
     row->sorting = sorting_measures(row->counts);
+    if (held_since != nullptr) {
+      assert(held_since->unwrapped.size() == frame.rods.size());
+      std::vector<bool> held(frame.rods.size());
+      for (std::size_t i = 0; i < frame.rods.size(); ++i) {
+        const double moved = (frame.rods[i].unwrapped - held_since->unwrapped[i]).norm();
+        held[i] = inside[i] && moved < config_.held_distance;
+      }
+      row->held = held_measures(frame, held, species_count);
+    }
     if (config_.at_wall) {
       for (const bool along : inside_flags(frame, config_.at_wall)) row->at_wall += along;
     }
   }
   recent_.push_back(frame);
+  if (has_trap()) {
+    Positions positions{frame.time, {}};
+    positions.unwrapped.reserve(frame.rods.size());
+    for (const engine::RodFrame& rod : frame.rods) positions.unwrapped.push_back(rod.unwrapped);
+    held_history_.push_back(std::move(positions));
+  }
   return row;
 }
 
@@ -87,6 +114,16 @@ std::string MetricsObserver::csv_header() const {
   }
   if (config_.species_names.size() >= 2) header += ",sorting_index";
   if (config_.at_wall) header += ",n_wall";
+  if (has_trap()) {
+    header += ",n_held_trap";
+    for (const std::string& s : config_.species_names) {
+      for (const char* column : {"n_held_trap_", "fraction_held_", "purity_held_"}) {
+        header += ',';
+        header += column;
+        header += s;
+      }
+    }
+  }
   return header;
 }
 
@@ -112,6 +149,16 @@ std::string MetricsObserver::csv_line(const MetricsRow& row) const {
   }
   if (config_.species_names.size() >= 2) append(line, row.sorting.index);
   if (config_.at_wall) append(line, row.at_wall);
+  if (has_trap()) {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    const auto count = [](int n) { return static_cast<double>(n); };
+    append(line, row.held ? count(row.held->all) : kNaN);
+    for (std::size_t s = 0; s < config_.species_names.size(); ++s) {
+      append(line, row.held ? count(row.held->species[s]) : kNaN);
+      append(line, row.held ? row.held->fraction[s] : kNaN);
+      append(line, row.held ? row.held->purity[s] : kNaN);
+    }
+  }
   return line;
 }
 

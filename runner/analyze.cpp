@@ -62,6 +62,16 @@ int analyze_run(const AnalyzeRequest& request, std::ostream& err) {
   const std::unique_ptr<metrics::RodFrameReader> source =
       metrics::open_rod_frames(rods, observer.config().species_names);
   metrics::RodFrameReader& reader = *source;
+  // The rows of metrics.csv are cut back to the checkpoint's byte count when a run resumes: an
+  // unfinished run's file is rewritten only with the columns it has.
+  if (output == directory / kMetricsCsvFile && record && record->status != RunStatus::kComplete &&
+      metrics_csv_header(directory) != observer.csv_header()) {
+    err << "rodsort: " << directory.string()
+        << " is not complete and its metrics.csv has other columns than this build writes; "
+           "rewritten, it could not be resumed: finish the run first, or write elsewhere with "
+           "-o\n";
+    return kExitUsage;
+  }
   std::string text = observer.csv_header() + "\n";
   engine::Frame frame;
   std::size_t frames = 0;

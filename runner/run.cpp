@@ -75,6 +75,7 @@ class RunSession {
           build_identity().c_str(),
           checkpoint.build.empty() ? "one that did not record itself" : checkpoint.build.c_str());
     }
+    check_metrics_columns(checkpoint);
     simulation_.restore(checkpoint.state);
     prior_wall_s_ = checkpoint.wall_s;
     prior_cpu_s_ = checkpoint.cpu_s;
@@ -129,6 +130,17 @@ class RunSession {
     double time_s;
     std::uint64_t position;  ///< in the first file of frames (FrameFile::position())
   };
+
+  /// A run's metrics.csv takes rows of the columns its header names; a build that writes other
+  /// columns (a newer one, with more measures) cannot continue it.
+  void check_metrics_columns(const Checkpoint& checkpoint) const {
+    if (metrics_csv_header(directory_) == observer_.csv_header()) return;
+    throw std::runtime_error(
+        (directory_ / kMetricsCsvFile).string() + " has other columns than this build writes (" +
+        observer_.csv_header() + "): continue the run with the build that wrote it (" +
+        (checkpoint.build.empty() ? std::string("an older one") : checkpoint.build) +
+        "), then `rodsort analyze` it to add this build's columns");
+  }
 
   /// The file the frames are read back from (rods.csv when the run writes it).
   const char* frames_file() const { return frame_files_.front()->name(); }
@@ -277,9 +289,10 @@ class RunSession {
 
   void remember_frame(double time_s, std::uint64_t position) {
     recent_frames_.push_back({time_s, position});
-    // Keep the latest frame at least one window and one frame older than the newest: a resumed
-    // observer fed the frames from there on has every frame it would have kept.
-    const double keep_after_s = time_s - plan_.metrics.window - plan_.frame_interval_s;
+    // Keep the latest frame at least the observer's history (its window, or the held count's
+    // lag) and one frame older than the newest: a resumed observer fed the frames from there on
+    // has every frame it would have kept.
+    const double keep_after_s = time_s - observer_.history() - plan_.frame_interval_s;
     while (recent_frames_.size() >= 2 && recent_frames_[1].time_s <= keep_after_s) {
       recent_frames_.pop_front();
     }

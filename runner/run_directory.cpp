@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdio>
+#include <fstream>
 #include <vector>
 
 namespace rodsort::runner {
@@ -46,6 +47,13 @@ void clear_run(const std::filesystem::path& directory) {
     if (is_snapshot(entry.path())) snapshots.push_back(entry.path());
   }
   for (const auto& snapshot : snapshots) std::filesystem::remove(snapshot);
+}
+
+std::string metrics_csv_header(const std::filesystem::path& directory) {
+  std::ifstream in(directory / kMetricsCsvFile);
+  std::string header;
+  std::getline(in, header);
+  return header;
 }
 
 }  // namespace rodsort::runner

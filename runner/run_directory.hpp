@@ -25,6 +25,9 @@ std::string snapshot_file_name(double time_s);
 /// alone does not count).
 bool holds_run(const std::filesystem::path& directory);
 
+/// The first line of the run's metrics.csv, its columns; empty when the file is absent or empty.
+std::string metrics_csv_header(const std::filesystem::path& directory);
+
 /// Removes the files a run writes from `directory`, and nothing else (for --force); the lock file
 /// stays, since the caller holds it.
 void clear_run(const std::filesystem::path& directory);

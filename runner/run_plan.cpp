@@ -30,6 +30,8 @@ metrics::MetricsConfig metrics_config(const scenarios::Scenario& scenario) {
   }
   config.window = scenario.metrics.window;
   config.stationary_speed_threshold = scenario.metrics.stationary_threshold;
+  config.held_distance = scenario.metrics.held_distance;
+  config.held_lag = scenario.metrics.held_lag;
   return config;
 }
 

@@ -52,8 +52,8 @@ RunSummary summarize_run(const std::filesystem::path& run_directory) {
   for (std::size_t column = 0; column < table.header.size(); ++column) {
     const std::string& name = table.header[column];
     const bool averaged = name.rfind("eta", 0) == 0 || name.rfind("fraction_trap_", 0) == 0 ||
-                          name.rfind("purity_", 0) == 0 || name == "sorting_index" ||
-                          name == "n_wall";
+                          name.rfind("purity_", 0) == 0 || name.rfind("fraction_held_", 0) == 0 ||
+                          name == "sorting_index" || name == "n_wall";
     if (!averaged) continue;
     if (table.rows.empty()) {
       summary.plateau_means.emplace_back(name, kNaN);

@@ -16,11 +16,12 @@ struct RunSummary {
   /// run.json's status, "stopped" for a run that says "running" but that no process holds (it was
   /// killed; `rodsort run --resume` continues it), or "pending" when there is no record.
   std::string status = "pending";
-  double simulated_s = 0.0;        ///< [s]
-  double wall_s = 0.0;             ///< [s]
+  double simulated_s = 0.0;  ///< [s]
+  double wall_s = 0.0;       ///< [s]
   double cpu_per_simulated_s = 0.0;
   /// Every eta column of metrics.csv (eta, eta_trap, eta_<species>, ...) and every sorting
-  /// measure (fraction_trap_<species>, purity_<species>, sorting_index), in the file's order,
+  /// measure (fraction_trap_<species>, purity_<species>, fraction_held_<species>,
+  /// purity_held_<species>, sorting_index), in the file's order,
   /// with its mean over the last half of the run; NaN without a trap or without rows.
   std::vector<std::pair<std::string, double>> plateau_means;
   double eta_spread = 0.0;      ///< standard deviation of eta over the same samples

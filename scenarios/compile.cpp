@@ -532,6 +532,8 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   }
   scenario.metrics.stationary_threshold = spec.stationary_threshold.value;
   scenario.metrics.window = spec.metrics_window.value;
+  scenario.metrics.held_distance = spec.held_distance.value;
+  scenario.metrics.held_lag = spec.held_lag.value;
   const auto short_real = [](double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", value);

@@ -252,6 +252,8 @@ std::string resolved_yaml(const Scenario& scenario) {
   w.key("metrics").begin_map();
   w.key("window").number(spec.metrics_window.value);
   w.key("stationary_threshold").number(spec.stationary_threshold.value);
+  w.key("held_distance").number(spec.held_distance.value);
+  w.key("held_lag").number(spec.held_lag.value);
   w.end_map();
 
   write_derived(w, scenario);

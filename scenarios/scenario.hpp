@@ -22,7 +22,7 @@
 namespace rodsort::trap {
 class Obstacle;
 class CellWall;
-}
+}  // namespace rodsort::trap
 
 namespace rodsort::scenarios {
 
@@ -49,6 +49,8 @@ struct OutputSettings {
 struct MetricsSettings {
   double window;                ///< tau: speeds are displacements over this window [s]
   double stationary_threshold;  ///< a rod slower than this is stationary [mm/s]
+  double held_distance;         ///< a rod in the trap that moved less than this is held [mm]
+  double held_lag;              ///< over this time [s]
 };
 
 /// What compile() derived, written into resolved scenarios for the record.
@@ -68,7 +70,7 @@ struct Scenario {
   /// The wall closing a bounded cell; nullptr for the periodic cell (`cell.shape: periodic`).
   std::shared_ptr<const trap::CellWall> cell;
   double cell_area = 0.0;  ///< where the rods move: the box, or inside the cell's wall [mm^2]
-  std::vector<SpeciesDerived> species;         ///< parallel to model.species
+  std::vector<SpeciesDerived> species;  ///< parallel to model.species
   RunSettings run{};
   OutputSettings output{};
   MetricsSettings metrics{};

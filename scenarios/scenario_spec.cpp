@@ -281,6 +281,8 @@ ScenarioSpec read_scenario_spec(const SourceNode& root, const std::string& defau
   SectionReader metrics = top.section("metrics");
   spec.metrics_window = metrics.real("window");
   spec.stationary_threshold = metrics.real("stationary_threshold");
+  spec.held_distance = metrics.real("held_distance");
+  spec.held_lag = metrics.real("held_lag");
   return spec;
 }
 

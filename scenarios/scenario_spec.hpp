@@ -109,6 +109,8 @@ struct ScenarioSpec {
 
   Sourced<double> metrics_window;        ///< [s]
   Sourced<double> stationary_threshold;  ///< [mm/s]
+  Sourced<double> held_distance;         ///< [mm]
+  Sourced<double> held_lag;              ///< [s]
 };
 
 /// Reads a scenario tree: unknown keys, types, ranges, and the consistency of keys that go

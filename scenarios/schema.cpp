@@ -228,6 +228,10 @@ std::vector<KeyInfo> scenario_keys() {
        "tau: a rod's speed is its displacement over this window; a multiple of frame_interval (another value is rounded up to one, with a warning)."},
       {"metrics.stationary_threshold", V::real, "mm/s", "5", non_negative(), {},
        "A rod is stationary (the paper's zero velocity) when its speed is below this."},
+      {"metrics.held_distance", V::real, "mm", "1", positive(), {},
+       "A rod inside the trap is held when it moved less than this over held_lag: a pile's rods are, a rod passing through is not, however slow (the held columns of metrics.csv)."},
+      {"metrics.held_lag", V::real, "s", "5", positive(), {},
+       "The time over which a held rod moved less than held_distance; the held columns are nan until the run is this old."},
 
       {"derived", V::any, "", "", {}, {},
        "Values computed from the others (amplitude, rod counts, areas, masses), written into "

@@ -15,9 +15,10 @@ From a run directory (metrics.csv, rods.csv):
 From a sweep directory (sweep.csv):
   eta-theta   time-averaged eta against the trap angle, one line per noise level, theta_c marked
   thetac-eps  theta_c against the collision-kick noise eps
-  measures    eta, eta in the trap and, for mixtures, the sorting index and the first species'
-              purity against the first swept key other than the seed (a sweep over noise or
-              composition; seeds averaged, standard errors as bars)
+  measures    eta, eta in the trap and, for mixtures, the sorting index, the first species'
+              purity and its purity among the rods the trap holds, against the first swept key
+              other than the seed (a sweep over noise or composition; seeds averaged, standard
+              errors as bars)
 From a single-particle study directory (`rodsort single -o`: summary.csv, lags.csv):
   axial-velocity  P(V_x), the axial velocity over the window, with the experiments' range of v0
   msd             mean squared displacement and heading correlation against the lag
@@ -117,8 +118,10 @@ class Table:
 
 
 def metrics_species(table):
-    """Species names of metrics.csv, from its per-species purity_<name> columns."""
-    return [column[len("purity_"):] for column in table.header if column.startswith("purity_")]
+    """Species names of metrics.csv, from its per-species purity_<name> columns (not the held
+    count's purity_held_<name>)."""
+    return [column[len("purity_"):] for column in table.header
+            if column.startswith("purity_") and not column.startswith("purity_held_")]
 
 
 def run_label(path, runs=()):
@@ -746,12 +749,18 @@ def plot_measures(plt, sweep_dir, out_dir, formats, written):
                         f"(swept: {', '.join(swept)})")
     x_column = numeric[0]
     others = [c for c in keys if c != x_column]
-    purities = [c for c in table.header if c.startswith("purity_") and c.endswith("_mean")]
+    purities = [c for c in table.header if c.startswith("purity_") and c.endswith("_mean")
+                and not c.startswith("purity_held_")]
+    held = [c for c in table.header if c.startswith("purity_held_") and c.endswith("_mean")]
     measures = [c for c in ("eta_mean", "eta_trap_mean", "sorting_index_mean") if table.has(c)]
     if len(purities) > 1:
         measures += purities[:1]
+    if len(held) > 1:
+        measures += held[:1]
     names = {"eta_mean": "η", "eta_trap_mean": "η in the trap",
              "sorting_index_mean": "sorting index S"}
+    names.update({c: f"purity of {c[len('purity_held_'):-len('_mean')]} among the held rods"
+                  for c in held})
     status = table.text("status")
     x_values = table.numbers(x_column)
     groups = list(zip(*(table.text(c) for c in others))) or [()] * len(x_values)

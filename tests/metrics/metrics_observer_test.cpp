@@ -86,12 +86,15 @@ TEST_CASE("metrics.csv header and lines", "[metrics]") {
         "t,eta,eta_trap,n_rods,n_stationary,n_trap,n_stationary_trap,mean_speed,"
         "n_stationary_A,n_trap_A,n_stationary_trap_A,eta_A,eta_trap_A,fraction_trap_A,purity_A,"
         "n_stationary_RnT,n_trap_RnT,n_stationary_trap_RnT,eta_RnT,eta_trap_RnT,fraction_trap_RnT,"
-        "purity_RnT,sorting_index");
+        "purity_RnT,sorting_index,n_held_trap,n_held_trap_A,fraction_held_A,purity_held_A,"
+        "n_held_trap_RnT,fraction_held_RnT,purity_held_RnT");
   observer.observe(frame(0.0));
   const auto row = observer.observe(frame(0.07));
   REQUIRE(row);
+  // Held needs a frame 5 s earlier.
   CHECK(observer.csv_line(*row) ==
-        "0.07,0.00875,0.005,3,2,1,1,3.33333333,1,1,1,0.005,0.005,0.5,1,1,0,0,0.00375,0,0,0,1");
+        "0.07,0.00875,0.005,3,2,1,1,3.33333333,1,1,1,0.005,0.005,0.5,1,1,0,0,0.00375,0,0,0,1,"
+        "nan,nan,nan,nan,nan,nan,nan");
 }
 
 TEST_CASE("metrics.csv without a trap", "[metrics]") {
@@ -106,4 +109,56 @@ TEST_CASE("metrics.csv without a trap", "[metrics]") {
   const auto row = observer.observe(frame_at(0.07, {rod_at(1, 1, 0)}));
   REQUIRE(row);
   CHECK(observer.csv_line(*row) == "0.07,nan,nan,1,1,0,0,0,1,0,0,nan,nan,0,nan");
+}
+
+TEST_CASE("MetricsObserver counts the rods the trap holds", "[metrics]") {
+  MetricsConfig c = config();
+  c.held_lag = 0.35;
+  MetricsObserver observer(c);
+  CHECK(observer.history() == 0.35);
+  // Rod 0 (A) rests inside; rod 1 (A) crosses the trap at 10 mm/s; rod 2 (RnT) creeps inside at
+  // 2 mm/s, slower than the stationary threshold: 0.7 mm in 0.35 s.
+  const auto creeping = [](double t) {
+    return frame_at(
+        t, {rod_at(50, 50, 0, 0), rod_at(35 + 10 * t, 45, 0, 0), rod_at(45 + 2 * t, 55, 0, 1)});
+  };
+  std::optional<MetricsRow> row;
+  for (int k = 0; k <= 4; ++k) row = observer.observe(creeping(0.07 * k));
+  REQUIRE(row);
+  CHECK_FALSE(row->held);  // no frame 0.35 s earlier yet
+  for (int k = 5; k <= 12; ++k) row = observer.observe(creeping(0.07 * k));
+  REQUIRE(row);
+  REQUIRE(row->held);
+  CHECK(row->counts.all.inside == 3);
+  CHECK(row->counts.all.stationary_inside == 2);
+  CHECK(row->held->all == 2);
+  CHECK(row->held->species == std::vector<int>{1, 1});
+  CHECK(row->held->fraction[0] == Approx(0.5));
+  CHECK(row->held->fraction[1] == Approx(1.0));
+  CHECK(row->held->purity[0] == Approx(0.5));
+  CHECK(row->held->purity[1] == Approx(0.5));
+
+  // At 1 mm in 0.7 s the creeping rod moves 1.4 mm: not held, though stationary by speed.
+  c.held_lag = 0.7;
+  MetricsObserver longer(c);
+  CHECK(longer.history() == 0.7);
+  for (int k = 0; k <= 12; ++k) row = longer.observe(creeping(0.07 * k));
+  REQUIRE(row);
+  REQUIRE(row->held);
+  CHECK(row->held->species == std::vector<int>{1, 0});
+  CHECK(row->held->purity[0] == Approx(1.0));
+  CHECK(row->counts.all.stationary_inside == 2);
+}
+
+TEST_CASE("MetricsObserver without a trap counts nothing held", "[metrics]") {
+  MetricsConfig c;
+  c.species_names = {"A"};
+  c.species_area = {2.0};
+  c.held_lag = 0.07;
+  MetricsObserver observer(c);
+  CHECK(observer.history() == 0.07);
+  observer.observe(frame_at(0.0, {rod_at(1, 1, 0)}));
+  const auto row = observer.observe(frame_at(0.07, {rod_at(1, 1, 0)}));
+  REQUIRE(row);
+  CHECK_FALSE(row->held);
 }

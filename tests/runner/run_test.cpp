@@ -211,6 +211,57 @@ TEST_CASE("a run stopped by SIGINT resumes to exactly the same files", "[runner]
   CHECK(resumed->steps == 3500);
 }
 
+TEST_CASE("a resumed run has the frames its held count looks back to", "[runner][run][resume]") {
+  // Held over 0.21 s: the resumed observer needs the frame at 0 s again for its row at 0.21 s,
+  // further back than the window (0.07 s) and a frame.
+  const std::vector<std::string> lag = {"metrics.held_lag=0.21"};
+  TempDirectory directory;
+  REQUIRE(run_tiny(directory / "whole", silent(), lag) == kExitOk);
+  const auto metrics = lines_of(directory / "whole" / kMetricsCsvFile);
+  REQUIRE(metrics.size() == kFrames - 1);
+  CHECK_THAT(metrics[0],
+             Catch::EndsWith(",n_held_trap,n_held_trap_A,fraction_held_A,purity_held_A"));
+  // t = 0.21 s is the first row with a frame 0.21 s earlier.
+  CHECK_THAT(metrics[4], Catch::StartsWith("0.175,"));
+  CHECK_THAT(metrics[4], Catch::EndsWith(",nan,nan,nan,nan"));
+  CHECK_THAT(metrics[5], Catch::StartsWith("0.21,"));
+  CHECK_THAT(metrics[5], !Catch::EndsWith(",nan,nan,nan,nan"));
+
+  const auto stopped = directory / "stopped";
+  RunOptions interrupt = silent();
+  interrupt.after_step = [](std::int64_t step) {
+    if (step == 1234) std::raise(SIGINT);
+  };
+  REQUIRE(run_tiny(stopped, interrupt, lag) == kExitInterrupted);
+  std::ostringstream err;
+  REQUIRE(resume_run_directory(stopped, silent(), err) == kExitOk);
+  check_same_outputs(directory / "whole", stopped);
+}
+
+TEST_CASE("a run whose metrics.csv has other columns is not resumed", "[runner][run][resume]") {
+  TempDirectory directory;
+  const auto stopped = directory / "stopped";
+  RunOptions interrupt = silent();
+  interrupt.after_step = [](std::int64_t step) {
+    if (step == 1234) std::raise(SIGINT);
+  };
+  REQUIRE(run_tiny(stopped, interrupt) == kExitInterrupted);
+  // As an older build wrote it, without the held columns.
+  std::string text = read_file(stopped / kMetricsCsvFile);
+  const std::size_t at = text.find(",n_held_trap,");
+  REQUIRE(at != std::string::npos);
+  text.erase(at, text.find('\n') - at);
+  write_file_atomically(stopped / kMetricsCsvFile, text);
+  const std::string record_before = read_file(stopped / kRunRecordFile);
+  const std::string rods_before = read_file(stopped / kRodsCsvFile);
+  std::ostringstream err;
+  CHECK_THROWS_WITH(resume_run_directory(stopped, silent(), err),
+                    Catch::Contains("has other columns than this build writes"));
+  CHECK(read_file(stopped / kMetricsCsvFile) == text);
+  CHECK(read_file(stopped / kRodsCsvFile) == rods_before);
+  CHECK(read_file(stopped / kRunRecordFile) == record_before);
+}
+
 TEST_CASE("a run that died after its checkpoint is cut back and resumed exactly",
           "[runner][run][resume]") {
   TempDirectory directory;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "metrics/sorting.hpp"
 #include "metrics/trapping.hpp"
 #include "scenarios/key_check.hpp"
 #include "scenarios/number_text.hpp"
@@ -99,4 +100,8 @@ TEST_CASE("the metrics defaults are the metrics layer's", "[schema]") {
         rodsort::metrics::kDefaultWindow);
   CHECK(parse_real(scenario_schema().at("metrics.stationary_threshold").default_value) ==
         rodsort::metrics::kDefaultStationarySpeed);
+  CHECK(parse_real(scenario_schema().at("metrics.held_distance").default_value) ==
+        rodsort::metrics::kDefaultHeldDistance);
+  CHECK(parse_real(scenario_schema().at("metrics.held_lag").default_value) ==
+        rodsort::metrics::kDefaultHeldLag);
 }
