@@ -184,7 +184,8 @@ void warn_rnt_glide(const ScenarioSpec& spec, Diagnostics& diagnostics) {
                         "full at run.dt = " + format_real(spec.dt.value) + " s locks RnT rods (" +
                             species.name.value +
                             ") in a slow glide at about half the speed of their run (5.1 against "
-                            "10.2 mm/s alone at 1e-4 s, docs/model.md); they run again at "
+                            "10.2 mm/s alone at 1e-4 s and the 1.2 mm gap; 2.4 against 3.1 mm/s "
+                            "at a 1.31 mm gap, docs/model.md); they run again at "
                             "run.dt = 1.25e-5 s");
     return;
   }
