@@ -41,6 +41,16 @@ RunOptions silent() {
   return options;
 }
 
+/// Raises SIGINT after step 1234: the run stops at the next frame, step 1400, and writes a
+/// checkpoint there.
+RunOptions sigint_at_step_1234() {
+  RunOptions options = silent();
+  options.after_step = [](std::int64_t step) {
+    if (step == 1234) std::raise(SIGINT);
+  };
+  return options;
+}
+
 /// Throws "simulated crash" after step 2000: the last checkpoint is then at step 1050, and frames
 /// up to step 1750 are written.
 RunOptions crash_at_step_2000() {
@@ -174,11 +184,7 @@ TEST_CASE("a run stopped by SIGINT resumes to exactly the same files", "[runner]
   REQUIRE(run_tiny(directory / "whole") == kExitOk);
 
   const auto stopped = directory / "stopped";
-  RunOptions interrupt = silent();
-  interrupt.after_step = [](std::int64_t step) {
-    if (step == 1234) std::raise(SIGINT);
-  };
-  REQUIRE(run_tiny(stopped, interrupt) == kExitInterrupted);
+  REQUIRE(run_tiny(stopped, sigint_at_step_1234()) == kExitInterrupted);
   const auto record = read_run_record(stopped);
   REQUIRE(record.has_value());
   CHECK(record->status == RunStatus::kInterrupted);
@@ -228,11 +234,7 @@ TEST_CASE("a resumed run has the frames its held count looks back to", "[runner]
   CHECK_THAT(metrics[5], !Catch::EndsWith(",nan,nan,nan,nan"));
 
   const auto stopped = directory / "stopped";
-  RunOptions interrupt = silent();
-  interrupt.after_step = [](std::int64_t step) {
-    if (step == 1234) std::raise(SIGINT);
-  };
-  REQUIRE(run_tiny(stopped, interrupt, lag) == kExitInterrupted);
+  REQUIRE(run_tiny(stopped, sigint_at_step_1234(), lag) == kExitInterrupted);
   std::ostringstream err;
   REQUIRE(resume_run_directory(stopped, silent(), err) == kExitOk);
   check_same_outputs(directory / "whole", stopped);
@@ -241,11 +243,7 @@ TEST_CASE("a resumed run has the frames its held count looks back to", "[runner]
 TEST_CASE("a run whose metrics.csv has other columns is not resumed", "[runner][run][resume]") {
   TempDirectory directory;
   const auto stopped = directory / "stopped";
-  RunOptions interrupt = silent();
-  interrupt.after_step = [](std::int64_t step) {
-    if (step == 1234) std::raise(SIGINT);
-  };
-  REQUIRE(run_tiny(stopped, interrupt) == kExitInterrupted);
+  REQUIRE(run_tiny(stopped, sigint_at_step_1234()) == kExitInterrupted);
   // As an older build wrote it, without the held columns.
   std::string text = read_file(stopped / kMetricsCsvFile);
   const std::size_t at = text.find(",n_held_trap,");
@@ -382,11 +380,7 @@ TEST_CASE("a checkpoint of another build is resumed only when asked to", "[runne
   TempDirectory directory;
   REQUIRE(run_tiny(directory / "whole") == kExitOk);
   const auto crashed = directory / "crashed";
-  RunOptions interrupt = silent();
-  interrupt.after_step = [](std::int64_t step) {
-    if (step == 1234) std::raise(SIGINT);
-  };
-  REQUIRE(run_tiny(crashed, interrupt) == kExitInterrupted);
+  REQUIRE(run_tiny(crashed, sigint_at_step_1234()) == kExitInterrupted);
   Checkpoint checkpoint = read_checkpoint(crashed / kCheckpointFile);
   CHECK(checkpoint.build == build_identity());
   CHECK_THAT(checkpoint.build, Catch::Contains("rodsort ") && Catch::Contains(", executable "));
