@@ -336,22 +336,49 @@ int summarize_sweep(const std::filesystem::path& sweep_directory, std::ostream& 
 
   std::vector<std::string> shown = {kSweepPointColumn};
   shown.insert(shown.end(), keys.begin(), keys.end());
-  for (const char* column :
-       {kSweepStatusColumn, "eta_mean", "eta_spread", "eta_trap_mean", "simulated_s"}) {
-    if (table.column(column)) shown.push_back(column);
-  }
-  std::vector<std::vector<std::string>> printed = {shown};
-  for (const auto& row : table.rows) {
-    std::vector<std::string> cells;
-    for (const std::string& column : shown) {
-      const std::size_t index = *table.column(column);
-      const bool numeric = index > *status_column;
-      cells.push_back(numeric ? short_number(row[index]) : row[index]);
+  shown.push_back(kSweepStatusColumn);
+  const auto print_table = [&](std::vector<std::string> columns) {
+    std::vector<std::vector<std::string>> printed = {columns};
+    for (const auto& row : table.rows) {
+      std::vector<std::string> cells;
+      for (const std::string& column : columns) {
+        const std::size_t index = *table.column(column);
+        const bool numeric = index > *status_column;
+        cells.push_back(numeric ? short_number(row[index]) : row[index]);
+      }
+      printed.push_back(std::move(cells));
     }
-    printed.push_back(std::move(cells));
+    print_aligned(out, printed);
+  };
+  std::vector<std::string> eta_columns = shown;
+  for (const char* column : {"eta_mean", "eta_spread", "eta_trap_mean", "simulated_s"}) {
+    if (table.column(column)) eta_columns.push_back(column);
   }
   out << "eta: trapping efficiency averaged over the last half of each run\n";
-  print_aligned(out, printed);
+  print_table(eta_columns);
+  // A mixture: each species' fraction inside the trap, the first species' share of the rods
+  // inside and of the held ones, and the sorting index.
+  if (table.column("sorting_index_mean")) {
+    std::vector<std::string> sorting_columns = shown;
+    std::string first_species;
+    for (const std::string& column : table.header) {
+      const bool fraction = column.rfind("fraction_trap_", 0) == 0;
+      if (!fraction || column.size() < 5 || column.substr(column.size() - 5) != "_mean") continue;
+      sorting_columns.push_back(column);
+      if (first_species.empty()) {
+        first_species = column.substr(14, column.size() - 14 - 5);
+      }
+    }
+    for (const std::string& column :
+         {"purity_" + first_species + "_mean", "purity_held_" + first_species + "_mean",
+          std::string("sorting_index_mean")}) {
+      if (table.column(column)) sorting_columns.push_back(column);
+    }
+    out << "sorting: averaged over the last half of each run (fraction_trap_s: of species s "
+           "inside the trap; purity: "
+        << first_species << "'s share of the rods inside, and of the held ones)\n";
+    print_table(sorting_columns);
+  }
   if (table.column(kAngleKey)) report_critical_angles(sweep_directory, table, keys, out);
   return kExitOk;
 }

@@ -448,3 +448,40 @@ TEST_CASE("A sweep's theta_c groups come in the numeric order of their values",
   CHECK(seeds.rows[0][0] == "5e-3");
   CHECK(seeds.rows[3][0] == "0.01");
 }
+
+TEST_CASE("summarize prints a mixture sweep's sorting measures", "[runner][summarize]") {
+  // Two points of a sweep over RnT's noise, their measures constant in time.
+  TempDirectory scratch;
+  const std::filesystem::path sweep = scratch / "sweep";
+  const std::vector<std::pair<std::string, std::string>> points = {
+      {"white_Dr-0", "0.7,0.5,0.49,0.51,0.17,0.48"}, {"white_Dr-2", "0.84,0.25,0.7,0.3,0.55,0.76"}};
+  std::string sweep_csv = "point,species[1].noise.white_Dr,status\n";
+  for (const auto& [point, values] : points) {
+    const std::filesystem::path run = sweep / point;
+    std::filesystem::create_directories(run);
+    RunRecord record;
+    record.name = "mixture";
+    record.status = RunStatus::kComplete;
+    record.rods = 397;
+    record.dt_s = 1e-4;
+    record.duration_s = record.simulated_s = 10.0;
+    record.steps = record.total_steps = 100000;
+    write_file_atomically(run / kRunRecordFile, to_json(record));
+    std::ofstream metrics(run / kMetricsCsvFile);
+    metrics << "t,eta,eta_trap,fraction_trap_A,fraction_trap_RnT,purity_A,purity_RnT,"
+               "sorting_index,purity_held_A\n";
+    for (int k = 1; k <= 100; ++k) metrics << 0.1 * k << ",0.6,0.5," << values << '\n';
+    sweep_csv += point + "," + point.substr(9) + ",complete\n";
+  }
+  write_file_atomically(sweep / "sweep.csv", sweep_csv);
+  std::ostringstream out, err;
+  REQUIRE(summarize_sweep(sweep, out, err) == kExitOk);
+  INFO(out.str() << err.str());
+  CHECK_THAT(out.str(), Catch::Contains("sorting: averaged over the last half of each run"));
+  CHECK_THAT(out.str(), Catch::Contains("A's share of the rods inside, and of the held ones"));
+  CHECK_THAT(out.str(), Catch::Contains("fraction_trap_A_mean  fraction_trap_RnT_mean  "
+                                        "purity_A_mean  purity_held_A_mean  sorting_index_mean"));
+  CHECK_THAT(out.str(), Catch::Contains("white_Dr-2  2                          complete  0.84"
+                                        "                  0.25                    0.7            "
+                                        "0.76                0.55\n"));
+}
