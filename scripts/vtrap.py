@@ -1,6 +1,9 @@
-"""The V trap's inside, as the metrics layer decides it (trap/v_trap.cpp, VTrap::contains), for
-the Python scripts beside this file: `from vtrap import inside_trap`."""
+"""The V trap's inside, as the metrics layer decides it (trap/v_trap.cpp, VTrap::contains), and
+the blocks of a run's scenario.resolved.yaml that say where it is, for the Python scripts beside
+this file: `from vtrap import inside_trap, resolved_block`."""
+import json
 import math
+import re
 
 import numpy as np
 
@@ -20,3 +23,24 @@ def inside_trap(points, trap):
     relative = points - apex
     return ((cross(left, relative) <= 0) & (cross(right, relative) >= 0)
             & (cross(right - left, relative - left) <= 0))
+
+
+def resolved_block(text, name):
+    """The `key: value` lines of a top-level block of scenario.resolved.yaml, values as JSON (the
+    resolved file writes numbers and flow lists, which JSON reads)."""
+    block = re.search(rf"^{name}:\n((?:  .*\n)+)", text, re.MULTILINE)
+    values = {}
+    for line in block.group(1).splitlines() if block else []:
+        match = re.match(r"^  (\w+): (.+)$", line)
+        if match:
+            try:
+                values[match.group(1)] = json.loads(match.group(2))
+            except ValueError:
+                values[match.group(1)] = match.group(2)
+    return values
+
+
+def species_names(text):
+    """The species' names of scenario.resolved.yaml, in order (their index in rods.h5)."""
+    block = re.search(r"^species:\n((?:[ -].*\n)+)", text, re.MULTILINE)
+    return re.findall(r"^  - name: (\S+)$", block.group(1), re.MULTILINE) if block else []
