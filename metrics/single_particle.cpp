@@ -153,6 +153,13 @@ RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity
   return result;
 }
 
+double backward_fraction(const std::vector<double>& axial_velocities) {
+  if (axial_velocities.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const auto backward = std::count_if(axial_velocities.begin(), axial_velocities.end(),
+                                      [](double v) { return v < -kBackwardSpeed; });
+  return static_cast<double>(backward) / static_cast<double>(axial_velocities.size());
+}
+
 std::vector<double> window_boundary_headings(const Track& track, int lag) {
   assert(lag > 0);
   std::vector<double> headings;

@@ -88,6 +88,13 @@ RunsAndTumbles runs_and_tumbles(const std::vector<std::vector<double>>& velocity
                                 double window, double threshold,
                                 const std::vector<std::vector<double>>& boundary_headings = {});
 
+/// A window goes backward when the rod moves against its heading faster than this [mm/s]: well
+/// beyond the rattling of a rod at rest along its axis.
+inline constexpr double kBackwardSpeed = 1.0;
+
+/// The fraction of the axial velocities V_x below -kBackwardSpeed; NaN without any.
+double backward_fraction(const std::vector<double>& axial_velocities);
+
 /// The heading at every boundary of back-to-back windows of `lag` samples, as
 /// axial_velocities(track, lag, lag) lays them: samples 0, lag, 2 lag, ... while a window fits.
 std::vector<double> window_boundary_headings(const Track& track, int lag);

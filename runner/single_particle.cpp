@@ -197,6 +197,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   const metrics::SampleStatistics speed = metrics::sample_statistics(per_rod_speed);
   const metrics::SampleStatistics diffusion = metrics::sample_statistics(per_rod_diffusion);
   const metrics::SampleStatistics spread = metrics::sample_statistics(every_velocity);
+  const double backward = metrics::backward_fraction(every_velocity);
   double mean_abs_turn_rate = 0.0;
   for (const double rate : per_rod_turn_rate) mean_abs_turn_rate += std::abs(rate);
   mean_abs_turn_rate /= static_cast<double>(per_rod_turn_rate.size());
@@ -241,9 +242,10 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   }
   std::snprintf(line, sizeof line,
                 "  running   %.3f of windows (V_x > %.3g mm/s); mean run %.3g s, mean tumble "
-                "%.3g s (%ld runs, %ld tumbles)\n",
+                "%.3g s (%ld runs, %ld tumbles)\n"
+                "  backward  %.3f of windows (V_x < -%g mm/s)\n",
                 runs.running_fraction, threshold, runs.mean_run, runs.mean_tumble, runs.runs,
-                runs.tumbles);
+                runs.tumbles, backward, metrics::kBackwardSpeed);
   out << line;
   std::snprintf(line, sizeof line,
                 "  turns     %.1f deg RMS over a run, %.1f deg RMS over a tumble (a new direction "
@@ -298,7 +300,8 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                       "Dr_about_turn_rad2_s",
                       "circling_rods",
                       "run_turn_rms_rad",
-                      "tumble_turn_rms_rad"};
+                      "tumble_turn_rms_rad",
+                      "backward_fraction"};
     summary.rows.push_back({species_name,
                             std::to_string(request.rods),
                             number(request.duration),
@@ -329,7 +332,8 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                             number(diffusion_about_turn.mean),
                             std::to_string(circling_rods),
                             number(runs.run_turn_rms),
-                            number(runs.tumble_turn_rms)});
+                            number(runs.tumble_turn_rms),
+                            number(backward)});
     write_file_atomically(request.output / "summary.csv", csv_text(summary));
 
     CsvTable per_rod;

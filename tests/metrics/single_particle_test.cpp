@@ -172,6 +172,14 @@ TEST_CASE("runs and tumbles count only segments bounded on both sides", "[metric
   CHECK(std::isnan(metrics::runs_and_tumbles({{9, 9, 9}}, 0.07, 1.0).mean_run));
 }
 
+TEST_CASE("the backward fraction counts windows against the heading faster than 1 mm/s",
+          "[metrics][single]") {
+  // A rest rattling at +-0.9 mm/s is not backward; -1.1 and -4 mm/s are.
+  CHECK(metrics::backward_fraction({5.0, 0.9, -0.9, -1.1, -4.0, 3.0, -1.0, 2.0}) == 2.0 / 8.0);
+  CHECK(metrics::backward_fraction({12.0, 14.0}) == 0.0);
+  CHECK(std::isnan(metrics::backward_fraction({})));
+}
+
 TEST_CASE("runs and tumbles measure the turn over each complete segment", "[metrics][single]") {
   constexpr double kPi = std::numbers::pi;
   // run (cut) | tumble x2 | run x2 | tumble | run x1 | tumble (cut)

@@ -52,6 +52,9 @@ TEST_CASE("rodsort single writes the study of one species", "[runner][single]") 
   CHECK(summary.column("run_turn_rms_rad"));
   CHECK(summary.column("tumble_turn_rms_rad"));
   CHECK_THAT(result.out, Catch::Contains("RMS over a tumble"));
+  // At the paper's gap rod A never goes backward.
+  REQUIRE(summary.column("backward_fraction"));
+  CHECK(summary.numbers(*summary.column("backward_fraction"))[0] == 0.0);
   const CsvTable lags = read_csv(out / "lags.csv");
   const auto msd = lags.numbers(*lags.column("position_msd_mm2"));
   REQUIRE(msd.size() > 10);
@@ -97,6 +100,30 @@ TEST_CASE("rod A stops and goes at the experiments' speed when the lid is out of
   // It runs in fewer than half of the 0.07 s windows: 0.42-0.45 over four sets of 12 rods, so
   // 0.05 is about four times that spread; on the plateau it runs in all of them.
   CHECK(std::abs(running - reference["running_fraction"].as<double>()) < 0.05);
+  // It stops, but it does not go backward: 0.1% of the windows of 16 rods x 40 s.
+  CHECK(summary.numbers(*summary.column("backward_fraction"))[0] < 0.02);
+}
+
+// docs/model.md, "The clearance to the lid", item 8: at the same gap a lone RnT with no imposed
+// noise reverses, where rod A only stops: it goes backward in 0.179-0.210 of the windows over six
+// sets of 8 rods x 20 s (seeds 1-6; mean 0.192, standard deviation 0.012), and the trap sorts the
+// A + RnT mixture on it (docs/reproduction.md, section 7). About 1.5 CPU-s.
+TEST_CASE("at a 1.31 mm gap a lone RnT goes backward in about a fifth of its windows",
+          "[runner][single][physics]") {
+  TempDirectory scratch;
+  const auto out = scratch / "study";
+  const auto result =
+      run_rodsort({"single", kSingleRods, "--species", "RnT", "--set", "drive.gap=1.31", "--rods",
+                   "8", "--duration", "20", "-o", out.string()},
+                  scratch.path());
+  INFO(result.err << result.out);
+  REQUIRE(result.status == kExitOk);
+  CHECK_THAT(result.out, Catch::Contains("backward  "));
+  const CsvTable summary = read_csv(out / "summary.csv");
+  const double backward = summary.numbers(*summary.column("backward_fraction"))[0];
+  // Five standard deviations of the six sets either side of their mean.
+  CHECK(backward > 0.192 - 0.06);
+  CHECK(backward < 0.192 + 0.06);
 }
 
 // docs/model.md, "A rough lid": under a lid of RMS slope 0.03, at the step where its gait is
