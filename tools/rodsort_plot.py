@@ -9,7 +9,8 @@
 
 From a run directory (metrics.csv, rods.csv):
   eta         eta(t), with eta in the trap and one line per species for mixtures
-  population  rods inside the trap per species over time (dashed: the stationary ones)
+  population  rods inside the trap per species over time (dashed: the stationary ones; dotted:
+              the held ones, docs/metrics.md)
   dtheta      P(dtheta), the distribution of orientation changes over tau (the paper's Fig. 2e-f),
               one line per species, or per run when several runs are given
 From a sweep directory (sweep.csv):
@@ -584,6 +585,7 @@ def plot_eta(plt, runs, out_dir, formats, written, until):
 
 def plot_population(plt, runs, out_dir, formats, written, until):
     figure, axes = new_figure(plt)
+    held_drawn = False
     several = len(runs) > 1
     for index, run_dir in enumerate(runs):
         table = run_metrics(run_dir, until)
@@ -600,7 +602,13 @@ def plot_population(plt, runs, out_dir, formats, written, until):
             if table.has(f"n_stationary_trap_{name}"):
                 axes.plot(t, table.numbers(f"n_stationary_trap_{name}"), color=line_colour,
                           linewidth=1.0, linestyle="--")
+            if table.has(f"n_held_trap_{name}"):
+                axes.plot(t, table.numbers(f"n_held_trap_{name}"), color=line_colour,
+                          linewidth=1.0, linestyle=":")
+                held_drawn = True
     axes.plot([], [], color="0.4", linestyle="--", label="stationary")
+    if held_drawn:
+        axes.plot([], [], color="0.4", linestyle=":", label="held")
     axes.set_xlabel("t [s]")
     axes.set_ylabel("rods inside the trap")
     axes.set_ylim(bottom=0.0)
