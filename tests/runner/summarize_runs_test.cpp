@@ -22,20 +22,27 @@ using rodsort::testing::TempDirectory;
 
 namespace {
 
+/// run.json of a complete run of `rods` rods over `simulated_s` at dt = 1e-4 s, 2 CPU-s per
+/// simulated second.
+void write_complete_record(const std::filesystem::path& directory, const std::string& name,
+                           int rods, double simulated_s, std::uint64_t seed = 0) {
+  RunRecord record;
+  record.name = name;
+  record.seed = seed;
+  record.status = RunStatus::kComplete;
+  record.rods = rods;
+  record.dt_s = 1e-4;
+  record.duration_s = record.simulated_s = simulated_s;
+  record.steps = record.total_steps = static_cast<std::int64_t>(simulated_s / 1e-4 + 0.5);
+  record.cpu_s = 2.0 * simulated_s;
+  write_file_atomically(directory / kRunRecordFile, to_json(record));
+}
+
 /// A complete 100 s run whose eta_trap spikes to 0.6 between 10 and 20 s, falls back to 0 at
 /// 20 s, rises again at 50 s and holds at 0.8; eta is eta_trap + 0.1 throughout.
 void write_history(const std::filesystem::path& directory) {
   std::filesystem::create_directories(directory);
-  RunRecord record;
-  record.name = "spiky";
-  record.status = RunStatus::kComplete;
-  record.rods = 40;
-  record.dt_s = 1e-4;
-  record.duration_s = 100.0;
-  record.simulated_s = 100.0;
-  record.steps = record.total_steps = 1000000;
-  record.cpu_s = 200.0;
-  write_file_atomically(directory / kRunRecordFile, to_json(record));
+  write_complete_record(directory, "spiky", 40, 100.0);
   std::ofstream metrics(directory / kMetricsCsvFile);
   metrics << "t,eta,eta_trap,n_rods\n";
   for (int k = 1; k <= 1000; ++k) {
@@ -213,16 +220,7 @@ namespace {
 void write_curve_run(const std::filesystem::path& directory, int seed, double angle, double eta,
                      const std::string& kick_eps = "0.01") {
   std::filesystem::create_directories(directory);
-  RunRecord record;
-  record.name = "curve";
-  record.seed = seed;
-  record.status = RunStatus::kComplete;
-  record.rods = 40;
-  record.dt_s = 1e-4;
-  record.duration_s = record.simulated_s = 100.0;
-  record.steps = record.total_steps = 1000000;
-  record.cpu_s = 200.0;
-  write_file_atomically(directory / kRunRecordFile, to_json(record));
+  write_complete_record(directory, "curve", 40, 100.0, seed);
   std::ofstream metrics(directory / kMetricsCsvFile);
   metrics << "t,eta,eta_trap,n_rods\n";
   for (int k = 1; k <= 1000; ++k) metrics << 0.1 * k << ',' << eta << ',' << 0.9 * eta << ",40\n";
@@ -459,14 +457,7 @@ TEST_CASE("summarize prints a mixture sweep's sorting measures", "[runner][summa
   for (const auto& [point, values] : points) {
     const std::filesystem::path run = sweep / point;
     std::filesystem::create_directories(run);
-    RunRecord record;
-    record.name = "mixture";
-    record.status = RunStatus::kComplete;
-    record.rods = 397;
-    record.dt_s = 1e-4;
-    record.duration_s = record.simulated_s = 10.0;
-    record.steps = record.total_steps = 100000;
-    write_file_atomically(run / kRunRecordFile, to_json(record));
+    write_complete_record(run, "mixture", 397, 10.0);
     std::ofstream metrics(run / kMetricsCsvFile);
     metrics << "t,eta,eta_trap,fraction_trap_A,fraction_trap_RnT,purity_A,purity_RnT,"
                "sorting_index,purity_held_A\n";
