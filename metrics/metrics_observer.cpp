@@ -86,7 +86,7 @@ std::optional<MetricsRow> MetricsObserver::observe(const engine::Frame& frame) {
         const double moved = (frame.rods[i].unwrapped - held_since->unwrapped[i]).norm();
         held[i] = inside[i] && moved < config_.held_distance;
       }
-      row->held = held_measures(frame, held, species_count);
+      row->held = held_measures(frame, held, row->counts);
     }
     if (config_.at_wall) {
       for (const bool along : inside_flags(frame, config_.at_wall)) row->at_wall += along;

@@ -20,22 +20,23 @@ Sorting sorting_measures(const TrappingCounts& counts) {
   return sorting;
 }
 
-Held held_measures(const engine::Frame& frame, const std::vector<bool>& held, int species_count) {
+Held held_measures(const engine::Frame& frame, const std::vector<bool>& held,
+                   const TrappingCounts& counts) {
   assert(held.size() == frame.rods.size());
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const int species_count = static_cast<int>(counts.species.size());
   Held measures;
   measures.species.assign(species_count, 0);
-  std::vector<int> rods(species_count, 0);
   for (std::size_t i = 0; i < frame.rods.size(); ++i) {
+    if (!held[i]) continue;
     const int s = frame.rods[i].species;
     assert(0 <= s && s < species_count);
-    ++rods[s];
-    if (!held[i]) continue;
     ++measures.species[s];
     ++measures.all;
   }
   for (int s = 0; s < species_count; ++s) {
-    measures.fraction.push_back(rods[s] > 0 ? double(measures.species[s]) / rods[s] : kNaN);
+    const int rods = counts.species[s].rods;
+    measures.fraction.push_back(rods > 0 ? double(measures.species[s]) / rods : kNaN);
     measures.purity.push_back(measures.all > 0 ? double(measures.species[s]) / measures.all : kNaN);
   }
   return measures;

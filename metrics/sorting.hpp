@@ -25,16 +25,16 @@ struct Sorting {
 /// From the `inside` counts (rods whose centre is inside, whatever their speed).
 Sorting sorting_measures(const TrappingCounts& counts);
 
-/// What the trap holds, told from what passes through it. A rod is held when its centre is inside
-/// the trap and it moved less than a set distance over a set lag (1 mm in 5 s by default): the
-/// rods of a pile do, a free rod does not, however slow it is. The paper's stationary rule (speed
-/// below 5 mm/s over 0.07 s) counts as stationary every rod slower than that, so where rods move
-/// at 2-4 mm/s (docs/model.md, the clearance) it counts the ones that wander through the trap.
 /// Default distance and lag of the held count [mm, s]: a pile's rods move less than 1 mm in 5 s,
 /// a free rod at 2-4 mm/s moves 10-20 mm (docs/metrics.md).
 inline constexpr double kDefaultHeldDistance = 1.0;
 inline constexpr double kDefaultHeldLag = 5.0;
 
+/// What the trap holds, told from what passes through it. A rod is held when its centre is inside
+/// the trap and it moved less than a set distance over a set lag (1 mm in 5 s by default): the
+/// rods of a pile do, a free rod does not, however slow it is. The paper's stationary rule (speed
+/// below 5 mm/s over 0.07 s) counts as stationary every rod slower than that, so where rods move
+/// at 2-4 mm/s (docs/model.md, the clearance) it counts the ones that wander through the trap.
 struct Held {
   int all = 0;                   ///< held rods
   std::vector<int> species;      ///< held rods of each species
@@ -42,8 +42,9 @@ struct Held {
   std::vector<double> purity;    ///< each species' share of the held rods; NaN when none is held
 };
 
-/// `held` per rod (inside and still over the lag); species outside [0, species_count) are a
-/// broken invariant.
-Held held_measures(const engine::Frame& frame, const std::vector<bool>& held, int species_count);
+/// `held` per rod (inside and still over the lag); `counts`, the frame's counts, give each
+/// species' rods. Species outside those of `counts` are a broken invariant.
+Held held_measures(const engine::Frame& frame, const std::vector<bool>& held,
+                   const TrappingCounts& counts);
 
 }  // namespace rodsort::metrics

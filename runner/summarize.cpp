@@ -360,13 +360,16 @@ int summarize_sweep(const std::filesystem::path& sweep_directory, std::ostream& 
   // inside and of the held ones, and the sorting index.
   if (table.column("sorting_index_mean")) {
     std::vector<std::string> sorting_columns = shown;
+    const std::string prefix = "fraction_trap_", suffix = "_mean";
     std::string first_species;
     for (const std::string& column : table.header) {
-      const bool fraction = column.rfind("fraction_trap_", 0) == 0;
-      if (!fraction || column.size() < 5 || column.substr(column.size() - 5) != "_mean") continue;
+      if (column.size() <= prefix.size() + suffix.size() || column.rfind(prefix, 0) != 0 ||
+          column.compare(column.size() - suffix.size(), suffix.size(), suffix) != 0) {
+        continue;
+      }
       sorting_columns.push_back(column);
       if (first_species.empty()) {
-        first_species = column.substr(14, column.size() - 14 - 5);
+        first_species = column.substr(prefix.size(), column.size() - prefix.size() - suffix.size());
       }
     }
     for (const std::string& column :
