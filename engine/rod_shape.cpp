@@ -136,10 +136,14 @@ double projected_area(const std::vector<Piece>& pieces) {
 /// than kMaxSpacingOverRadius radii.
 void add_evenly_spaced(std::vector<Sphere>& spheres, double first, double last, double radius) {
   const double span = last - first;
+  // One sphere where the span is empty (an RnT step at the end of its range).
   const int intervals =
-      std::max(1, static_cast<int>(std::ceil(span / (kMaxSpacingOverRadius * radius) - 1e-12)));
+      span > 0.0
+          ? std::max(1,
+                     static_cast<int>(std::ceil(span / (kMaxSpacingOverRadius * radius) - 1e-12)))
+          : 0;
   for (int k = 0; k <= intervals; ++k) {
-    spheres.push_back({first + span * k / intervals, radius});
+    spheres.push_back({intervals == 0 ? first : first + span * k / intervals, radius});
   }
 }
 
@@ -175,22 +179,30 @@ RodProfile linear_taper_profile(double length, double thick_radius, double thin_
 
 RodProfile preset_a_profile() { return linear_taper_profile(4.5, 0.55, 0.20, 9); }
 
-RodProfile preset_rnt_profile(double thin_radius) {
-  constexpr double kLength = 3.5;        // tip to tip [mm]
-  constexpr double kThickRadius = 0.55;  // [mm]
-  constexpr double kStep = 0.5 * kLength;
-  if (!(thin_radius > 0.0) || thin_radius > kThickRadius) {
+double rnt_step_min(double thin_radius) {
+  return kRntThickRadius + std::sqrt(kRntThickRadius * kRntThickRadius - thin_radius * thin_radius);
+}
+
+double rnt_step_max(double thin_radius) { return kRntLength - thin_radius; }
+
+RodProfile preset_rnt_profile(double thin_radius, double step) {
+  if (!(thin_radius > 0.0) || thin_radius > kRntThickRadius) {
     throw std::invalid_argument("preset_rnt_profile: thin radius must be in (0, 0.55] mm, got " +
                                 std::to_string(thin_radius));
   }
-  // The step sits at mid-length: the last thick sphere is placed so that its outline comes down to
-  // the thin radius exactly there, and the first thin sphere is centred there, so the two meet at
-  // the step and the thick half keeps its full radius as far as spheres allow.
+  if (!(step >= rnt_step_min(thin_radius)) || !(step <= rnt_step_max(thin_radius))) {
+    throw std::invalid_argument(
+        "preset_rnt_profile: step must be in [" + std::to_string(rnt_step_min(thin_radius)) + ", " +
+        std::to_string(rnt_step_max(thin_radius)) + "] mm, got " + std::to_string(step));
+  }
+  // The last thick sphere is placed so that its outline comes down to the thin radius exactly at
+  // the step, and the first thin sphere is centred there, so the two meet at the step and the
+  // thick part keeps its full radius as far as spheres allow.
   RodProfile profile;
   const double last_thick =
-      kStep - std::sqrt(kThickRadius * kThickRadius - thin_radius * thin_radius);
-  add_evenly_spaced(profile.spheres, kThickRadius, last_thick, kThickRadius);
-  add_evenly_spaced(profile.spheres, kStep, kLength - thin_radius, thin_radius);
+      step - std::sqrt(kRntThickRadius * kRntThickRadius - thin_radius * thin_radius);
+  add_evenly_spaced(profile.spheres, kRntThickRadius, last_thick, kRntThickRadius);
+  add_evenly_spaced(profile.spheres, step, kRntLength - thin_radius, thin_radius);
   return profile;
 }
 

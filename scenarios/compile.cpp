@@ -29,7 +29,19 @@ std::string at(const SourceLocation& where) { return " (" + where.to_string() + 
 std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnostics& diagnostics) {
   switch (shape.kind) {
     case ShapeSpec::Kind::preset:
-      if (shape.preset.value == "RnT") return engine::preset_rnt_profile(shape.thin_radius.value);
+      if (shape.preset.value == "RnT") {
+        const double thin = shape.thin_radius.value;
+        const double step = shape.step.value;
+        if (step < engine::rnt_step_min(thin) || step > engine::rnt_step_max(thin)) {
+          diagnostics.error(
+              shape.step.where, shape.step.path,
+              "must be from " + mm(std::ceil(engine::rnt_step_min(thin) * 1e3) / 1e3) + " to " +
+                  mm(std::floor(engine::rnt_step_max(thin) * 1e3) / 1e3) + " with thin_radius " +
+                  mm(thin) + " (one whole sphere on each side of the step), got " + mm(step));
+          return std::nullopt;
+        }
+        return engine::preset_rnt_profile(thin, step);
+      }
       return engine::preset_a_profile();
     case ShapeSpec::Kind::taper: {
       const double length = shape.taper_length.value;

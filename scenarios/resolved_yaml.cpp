@@ -68,7 +68,10 @@ void write_shape(Writer& w, const ShapeSpec& shape) {
   switch (shape.kind) {
     case ShapeSpec::Kind::preset:
       w.key("preset").word(shape.preset.value);
-      if (shape.preset.value == "RnT") w.key("thin_radius").number(shape.thin_radius.value);
+      if (shape.preset.value == "RnT") {
+        w.key("thin_radius").number(shape.thin_radius.value);
+        w.key("step").number(shape.step.value);
+      }
       break;
     case ShapeSpec::Kind::taper:
       w.key("taper").begin_map();

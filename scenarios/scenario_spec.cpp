@@ -26,6 +26,7 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
                       "give one of preset, taper or spheres, not several");
   }
   out.thin_radius = shape.real("thin_radius");
+  out.step = shape.real("step");
   if (has_taper) {
     out.kind = ShapeSpec::Kind::taper;
     SectionReader taper = shape.section("taper");
@@ -41,10 +42,14 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
     out.preset = shape.choice("preset");
     if (!out.preset.given) out.preset.value = "A";
   }
-  if (shape.has("thin_radius") &&
-      !(out.kind == ShapeSpec::Kind::preset && out.preset.value == "RnT")) {
+  const bool rnt = out.kind == ShapeSpec::Kind::preset && out.preset.value == "RnT";
+  if (shape.has("thin_radius") && !rnt) {
     diagnostics.error(shape.location_of("thin_radius"), shape.path_of("thin_radius"),
                       "applies to `preset: RnT` only (use taper.thin_radius for a taper)");
+  }
+  if (shape.has("step") && !rnt) {
+    diagnostics.error(shape.location_of("step"), shape.path_of("step"),
+                      "applies to `preset: RnT` only");
   }
   return out;
 }

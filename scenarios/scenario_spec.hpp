@@ -22,7 +22,8 @@ struct ShapeSpec {
   enum class Kind { preset, taper, spheres };
   Kind kind = Kind::preset;
   Sourced<std::string> preset;         ///< "A" or "RnT"
-  Sourced<double> thin_radius;         ///< RnT's thin half [mm]
+  Sourced<double> thin_radius;         ///< RnT's thin part [mm]
+  Sourced<double> step;                ///< RnT's step, from the thick tip [mm]
   Sourced<double> taper_length;        ///< tip to tip [mm]
   Sourced<double> taper_thick_radius;  ///< [mm]
   Sourced<double> taper_thin_radius;   ///< [mm]

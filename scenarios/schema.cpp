@@ -105,10 +105,14 @@ std::vector<KeyInfo> scenario_keys() {
        "Profile of the rod: a `preset`, a `taper`, or explicit `spheres` (one of the three)."},
       {"species[].shape.preset", V::choice, "", "", {}, {"A", "RnT"},
        "A: the paper's rod, 9 spheres with radii 0.55 -> 0.20 mm, 4.5 mm tip to tip. RnT: 3.5 mm, "
-       "thick half r = 0.55 mm, thin half r = thin_radius.",
+       "r = 0.55 mm from the thick tip to the step, r = thin_radius beyond it.",
        "A, when neither taper nor spheres is given"},
       {"species[].shape.thin_radius", V::real, "mm", "0.3", half_open(0, 0.55), {},
-       "Radius of the thin half of the RnT preset (RnT only)."},
+       "Radius of the thin part of the RnT preset (RnT only)."},
+      {"species[].shape.step", V::real, "mm", "1.75", positive(), {},
+       "Where the RnT preset's single step lies, from its thick tip (RnT only; the paper gives no "
+       "figure, mid-length by default). From 0.55 + sqrt(0.55^2 - thin_radius^2) to "
+       "3.5 - thin_radius: one whole sphere on each side."},
       {"species[].shape.taper", V::section, "", "", {}, {},
        "A linear taper: spheres with radii linear from the thick to the thin end."},
       {"species[].shape.taper.length", V::real, "mm", "", positive(), {},

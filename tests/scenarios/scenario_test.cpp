@@ -220,7 +220,7 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
       "     material: steel, fraction: 0.5}\n"
       "  - {name: C, shape: {spheres: [[0, 0.5], [0.6, 0.45], [1.2, 0.4], [1.8, 0.3]]},\n"
       "     count: 3, initial: {region: inside_trap, heading: toward_apex}}\n"
-      "  - {name: D, shape: {preset: RnT, thin_radius: 0.25}, count: 4,\n"
+      "  - {name: D, shape: {preset: RnT, thin_radius: 0.25, step: 2.2}, count: 4,\n"
       "     initial: {region: outside_trap, heading: 45}}\n"
       "materials:\n"
       "  steel-wall: {restitution: 0.5}\n"
@@ -243,6 +243,20 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
   CHECK(second.model.materials.get(steel, second.model.materials.index_of("rod")).friction == 0.2);
   CHECK_THAT(resolved, Catch::Contains("derived:"));
   CHECK_THAT(resolved, Catch::Contains("gamma:"));
+}
+
+TEST_CASE("the RnT step is checked against the thin radius and applies to RnT only", "[scenario]") {
+  const std::string rnt =
+      "species: [{shape: {preset: RnT, thin_radius: 0.3, step: 3.3}, count: 3}]\n";
+  CHECK_THAT(errors_of(rnt), Catch::Contains("test.yaml:1:57: species[0].shape.step: must be "
+                                             "from 1.011 mm to 3.2 mm with thin_radius 0.3 mm"));
+  CHECK_THAT(errors_of(rnt, {"species[0].shape.step=1"}),
+             Catch::Contains("species[0].shape.step: must be from 1.011 mm"));
+  load_ok("species: [{shape: {preset: RnT, thin_radius: 0.3, step: 3.2}, count: 3}]\n");
+  CHECK_THAT(errors_of("species: [{shape: {preset: A, step: 2}}]\n"),
+             Catch::Contains("species[0].shape.step: applies to `preset: RnT` only"));
+  const Scenario mid = load_ok("species: [{shape: {preset: RnT}, count: 3}]\n");
+  CHECK_THAT(resolved_yaml(mid), Catch::Contains("step: 1.75"));
 }
 
 TEST_CASE("the resolved paper scenario states the derived values", "[scenario][resolved]") {
