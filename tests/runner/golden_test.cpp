@@ -1,8 +1,10 @@
-// The golden physics test: the whole tool (scenario, engine, trap, metrics, runner) on a small
-// system in which a narrow trap fills and a wide one stays nearly empty, compared with reference
-// values kept in tests/golden/reference.yaml (section trap_filling: mean and spread over six seeds,
-// regenerated on purpose only by scripts/golden-reference). A change that moves the physics beyond
-// the seed-to-seed spread fails it; a change that keeps the physics but not the bits does not.
+// The golden physics tests: the whole tool (scenario, engine, trap, metrics, runner) on small
+// systems, compared with reference values kept in tests/golden/reference.yaml, each regenerated on
+// purpose only by its script. In one a narrow trap fills and a wide one stays nearly empty (section
+// trap_filling, scripts/golden-reference); in the other, with the lid at 1.31 mm, a trap keeps A
+// from a mixture with RnT (section sorting, scripts/golden-sorting-reference). Each reference is a
+// mean and spread over six seeds. A change that moves the physics beyond the seed-to-seed spread
+// fails them; a change that keeps the physics but not the bits does not.
 
 #include <yaml-cpp/yaml.h>
 
@@ -11,6 +13,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "runner/csv_table.hpp"
 #include "runner/exit_code.hpp"
@@ -25,13 +28,15 @@ namespace {
 
 const std::string kGolden = RODSORT_SOURCE_DIR "/tests/golden/";
 
-/// Runs the golden system with a trap of `angle` degrees and the given seed; returns eta_trap
-/// averaged over the last 10 simulated seconds.
-double late_eta_trap(const TempDirectory& directory, double angle, int seed) {
-  const std::string label = std::to_string(static_cast<int>(angle)) + "-" + std::to_string(seed);
+/// Runs one of the golden scenarios with the given --set options into directory/label; returns
+/// the mean of `column` of metrics.csv over the frames from t = `from` s on, leaving out NaN (a
+/// measure of no rods).
+double late_mean(const TempDirectory& directory, const std::string& scenario,
+                 const std::vector<std::string>& set_options, const std::string& label,
+                 const std::string& column, double from) {
   RunRequest request;
-  request.scenario = kGolden + "trap-filling.yaml";
-  request.set_options = {"trap.angle=" + std::to_string(angle), "seed=" + std::to_string(seed)};
+  request.scenario = kGolden + scenario;
+  request.set_options = set_options;
   request.output = directory / label;
   request.options.log = nullptr;
   std::ostringstream err;
@@ -40,16 +45,32 @@ double late_eta_trap(const TempDirectory& directory, double angle, int seed) {
   REQUIRE(status == kExitOk);
   const CsvTable table = read_csv(request.output / kMetricsCsvFile);
   const std::vector<double> times = table.numbers(*table.column("t"));
-  const std::vector<double> eta = table.numbers(*table.column("eta_trap"));
+  const std::vector<double> values = table.numbers(*table.column(column));
   double sum = 0.0;
   int samples = 0;
   for (std::size_t i = 0; i < times.size(); ++i) {
-    if (times[i] < 30.0 - 1e-9) continue;
-    sum += eta[i];
+    if (times[i] < from - 1e-9 || std::isnan(values[i])) continue;
+    sum += values[i];
     ++samples;
   }
   REQUIRE(samples > 0);
   return sum / samples;
+}
+
+/// The golden trap system with a trap of `angle` degrees and the given seed: eta_trap averaged
+/// over the last 10 simulated seconds.
+double late_eta_trap(const TempDirectory& directory, double angle, int seed) {
+  return late_mean(directory, "trap-filling.yaml",
+                   {"trap.angle=" + std::to_string(angle), "seed=" + std::to_string(seed)},
+                   std::to_string(static_cast<int>(angle)) + "-" + std::to_string(seed), "eta_trap",
+                   30.0);
+}
+
+/// The golden sorting system with the given seed: A's share of the rods the trap holds, averaged
+/// over the last 75 simulated seconds.
+double late_purity_held_a(const TempDirectory& directory, int seed) {
+  return late_mean(directory, "sorting-gap131.yaml", {"seed=" + std::to_string(seed)},
+                   "sorting-" + std::to_string(seed), "purity_held_A", 75.0);
 }
 
 }  // namespace
@@ -76,4 +97,25 @@ TEST_CASE("golden: a narrow trap fills and a wide one stays nearly empty", "[gol
   // And the physics the test is for: the narrow trap holds far more than the wide one.
   CHECK(reference["narrow"]["eta_trap"]["mean"].as<double>() >
         reference["wide"]["eta_trap"]["mean"].as<double>() + 0.3);
+}
+
+TEST_CASE("golden: at a 1.31 mm gap the trap holds mostly A from a mixture of RnT and A",
+          "[golden][physics]") {
+  const YAML::Node reference = YAML::LoadFile(kGolden + "reference.yaml")["sorting"];
+  REQUIRE(reference.IsMap());
+  const double mean = reference["gap_1.31"]["purity_held_A"]["mean"].as<double>();
+  const double sd = reference["gap_1.31"]["purity_held_A"]["sd"].as<double>();
+  TempDirectory directory;
+  // The mean of seeds 1 and 2 against the reference mean, within three standard errors of a
+  // two-seed mean, and never closer than 0.05.
+  const double tolerance = std::max(0.05, 3.0 * sd / std::sqrt(2.0));
+  const double measured =
+      0.5 * (late_purity_held_a(directory, 1) + late_purity_held_a(directory, 2));
+  INFO("seeds 1 and 2: A's share of the held rods " << measured << ", reference " << mean << " +- "
+                                                    << tolerance);
+  CHECK(std::abs(measured - mean) <= tolerance);
+  // And the physics the test is for: from a mixture of 40% A the pile is mostly A, where at the
+  // paper's gap it is not.
+  CHECK(measured > 0.6);
+  CHECK(mean > reference["gap_1.2"]["purity_held_A"]["mean"].as<double>() + 0.15);
 }
