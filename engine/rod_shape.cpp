@@ -179,9 +179,17 @@ RodProfile linear_taper_profile(double length, double thick_radius, double thin_
 
 RodProfile preset_a_profile() { return linear_taper_profile(4.5, 0.55, 0.20, 9); }
 
-double rnt_step_min(double thin_radius) {
-  return kRntThickRadius + std::sqrt(kRntThickRadius * kRntThickRadius - thin_radius * thin_radius);
+namespace {
+
+/// How far before the step the last thick sphere of the RnT preset is centred, so that its outline
+/// comes down to the thin radius at the step [mm].
+double rnt_shoulder(double thin_radius) {
+  return std::sqrt(kRntThickRadius * kRntThickRadius - thin_radius * thin_radius);
 }
+
+}  // namespace
+
+double rnt_step_min(double thin_radius) { return kRntThickRadius + rnt_shoulder(thin_radius); }
 
 double rnt_step_max(double thin_radius) { return kRntLength - thin_radius; }
 
@@ -199,9 +207,8 @@ RodProfile preset_rnt_profile(double thin_radius, double step) {
   // the step, and the first thin sphere is centred there, so the two meet at the step and the
   // thick part keeps its full radius as far as spheres allow.
   RodProfile profile;
-  const double last_thick =
-      step - std::sqrt(kRntThickRadius * kRntThickRadius - thin_radius * thin_radius);
-  add_evenly_spaced(profile.spheres, kRntThickRadius, last_thick, kRntThickRadius);
+  add_evenly_spaced(profile.spheres, kRntThickRadius, step - rnt_shoulder(thin_radius),
+                    kRntThickRadius);
   add_evenly_spaced(profile.spheres, step, kRntLength - thin_radius, thin_radius);
   return profile;
 }
