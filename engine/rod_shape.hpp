@@ -10,6 +10,7 @@ namespace rodsort::engine {
 /// The RnT preset's length, tip to tip, and the radius of its thick part [mm].
 inline constexpr double kRntLength = 3.5;
 inline constexpr double kRntThickRadius = 0.55;
+inline constexpr double kRntThinRadius = 0.3;  ///< the preset's thin part [mm]
 
 /// One sphere of a rod profile.
 struct Sphere {
@@ -26,7 +27,7 @@ struct RodProfile {
 RodProfile preset_a_profile();
 /// Paper RnT rod: 3.5 mm tip to tip, thick part r = 0.55 mm from the thick tip to the step, `step`
 /// mm from the thick tip (mid-length by default), thin part r = thin_radius beyond it.
-RodProfile preset_rnt_profile(double thin_radius = 0.3, double step = kRntLength / 2);
+RodProfile preset_rnt_profile(double thin_radius = kRntThinRadius, double step = kRntLength / 2);
 /// Where the RnT preset's step may lie, from the thick tip [mm], for a given thin radius: far
 /// enough from the thick tip for one whole thick sphere, and from the thin tip for one thin sphere.
 double rnt_step_min(double thin_radius);

@@ -112,7 +112,9 @@ std::vector<KeyInfo> scenario_keys() {
       {"species[].shape.step", V::real, "mm", "1.75", positive(), {},
        "Where the RnT preset's single step lies, from its thick tip (RnT only; the paper gives no "
        "figure, mid-length by default). From 0.55 + sqrt(0.55^2 - thin_radius^2) to "
-       "3.5 - thin_radius: one whole sphere on each side."},
+       "3.5 - thin_radius: one whole sphere on each side. Moved back from mid-length (to 3 mm), or "
+       "with another thin_radius, RnT's gait may change with run.dt, and validate warns above "
+       "run.dt = 1.25e-5 s (docs/model.md, \"Where the RnT's step lies\")."},
       {"species[].shape.taper", V::section, "", "", {}, {},
        "A linear taper: spheres with radii linear from the thick to the thin end."},
       {"species[].shape.taper.length", V::real, "mm", "", positive(), {},

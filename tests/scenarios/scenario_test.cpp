@@ -301,6 +301,35 @@ TEST_CASE("RnT rods with the collision kick at a large dt are warned about", "[s
   CHECK(load_scenario_text("species: [{name: A, count: 10}]\n", "k.yaml").diagnostics.empty());
 }
 
+TEST_CASE("RnT outlines whose gait changes with dt are warned about at a large dt", "[scenario]") {
+  const auto rnt = [](const std::string& shape) {
+    return "species: [{name: R, shape: {preset: RnT" + shape +
+           "}, count: 10, noise: {kick_eps: 0}}]\n";
+  };
+  const LoadResult coarse = load_scenario_text(rnt(", thin_radius: 0.4, step: 2.25"), "s.yaml");
+  REQUIRE(coarse.ok());
+  REQUIRE(coarse.diagnostics.size() == 1);
+  CHECK(coarse.diagnostics[0].severity == Severity::warning);
+  CHECK_THAT(
+      coarse.diagnostics[0].to_string(),
+      Catch::Contains("s.yaml:1:66: warning: species[0].shape.step: an RnT rod with its step "
+                      "at 2.25 mm and thin_radius 0.4 mm may change its gait with run.dt = "
+                      "1e-4 s"));
+  // Only the thin radius moved, the step left at mid-length: the warning names thin_radius.
+  const LoadResult thin = load_scenario_text(rnt(", thin_radius: 0.2"), "s.yaml");
+  REQUIRE(thin.diagnostics.size() == 1);
+  CHECK_THAT(thin.diagnostics[0].to_string(), Catch::Contains("species[0].shape.thin_radius: "));
+  // Resolved at 1.25e-5 s; the preset's own outline, written out or not; a short thick part,
+  // which runs steadily at every dt; a long one, which lies level and rattles.
+  CHECK(load_scenario_text(rnt(", thin_radius: 0.4, step: 2.25") + "run: {dt: 1.25e-5}\n", "s.yaml")
+            .diagnostics.empty());
+  CHECK(load_scenario_text(rnt(""), "s.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(rnt(", thin_radius: 0.3, step: 1.75"), "s.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(rnt(", step: 1.5"), "s.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(rnt(", step: 3.0"), "s.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(rnt(", step: 2.99"), "s.yaml").diagnostics.size() == 1);
+}
+
 TEST_CASE("RnT rods with the turns corrected in full at a large dt are warned about",
           "[scenario]") {
   const std::string rnt =
