@@ -183,32 +183,36 @@ namespace {
 
 /// How far before the step the last thick sphere of the RnT preset is centred, so that its outline
 /// comes down to the thin radius at the step [mm].
-double rnt_shoulder(double thin_radius) {
-  return std::sqrt(kRntThickRadius * kRntThickRadius - thin_radius * thin_radius);
+double rnt_shoulder(double thin_radius, double thick_radius) {
+  return std::sqrt(thick_radius * thick_radius - thin_radius * thin_radius);
 }
 
 }  // namespace
 
-double rnt_step_min(double thin_radius) { return kRntThickRadius + rnt_shoulder(thin_radius); }
+double rnt_step_min(double thin_radius, double thick_radius) {
+  return thick_radius + rnt_shoulder(thin_radius, thick_radius);
+}
 
 double rnt_step_max(double thin_radius) { return kRntLength - thin_radius; }
 
-RodProfile preset_rnt_profile(double thin_radius, double step) {
-  if (!(thin_radius > 0.0) || thin_radius > kRntThickRadius) {
-    throw std::invalid_argument("preset_rnt_profile: thin radius must be in (0, 0.55] mm, got " +
+RodProfile preset_rnt_profile(double thin_radius, double step, double thick_radius) {
+  if (!(thin_radius > 0.0) || !(thin_radius <= thick_radius)) {
+    throw std::invalid_argument("preset_rnt_profile: thin radius must be in (0, " +
+                                std::to_string(thick_radius) + "] mm, got " +
                                 std::to_string(thin_radius));
   }
-  if (!(step >= rnt_step_min(thin_radius)) || !(step <= rnt_step_max(thin_radius))) {
-    throw std::invalid_argument(
-        "preset_rnt_profile: step must be in [" + std::to_string(rnt_step_min(thin_radius)) + ", " +
-        std::to_string(rnt_step_max(thin_radius)) + "] mm, got " + std::to_string(step));
+  const double step_min = rnt_step_min(thin_radius, thick_radius);
+  if (!(step >= step_min) || !(step <= rnt_step_max(thin_radius))) {
+    throw std::invalid_argument("preset_rnt_profile: step must be in [" + std::to_string(step_min) +
+                                ", " + std::to_string(rnt_step_max(thin_radius)) + "] mm, got " +
+                                std::to_string(step));
   }
   // The last thick sphere is placed so that its outline comes down to the thin radius exactly at
   // the step, and the first thin sphere is centred there, so the two meet at the step and the
   // thick part keeps its full radius as far as spheres allow.
   RodProfile profile;
-  add_evenly_spaced(profile.spheres, kRntThickRadius, step - rnt_shoulder(thin_radius),
-                    kRntThickRadius);
+  add_evenly_spaced(profile.spheres, thick_radius, step - rnt_shoulder(thin_radius, thick_radius),
+                    thick_radius);
   add_evenly_spaced(profile.spheres, step, kRntLength - thin_radius, thin_radius);
   return profile;
 }

@@ -25,12 +25,14 @@ struct RodProfile {
 
 /// Paper rod A: 9 spheres, radii linear 0.55 -> 0.20 mm, 4.5 mm tip to tip.
 RodProfile preset_a_profile();
-/// Paper RnT rod: 3.5 mm tip to tip, thick part r = 0.55 mm from the thick tip to the step, `step`
-/// mm from the thick tip (mid-length by default), thin part r = thin_radius beyond it.
-RodProfile preset_rnt_profile(double thin_radius = kRntThinRadius, double step = kRntLength / 2);
-/// Where the RnT preset's step may lie, from the thick tip [mm], for a given thin radius: far
-/// enough from the thick tip for one whole thick sphere, and from the thin tip for one thin sphere.
-double rnt_step_min(double thin_radius);
+/// Paper RnT rod: 3.5 mm tip to tip, thick part r = thick_radius (0.55 mm, the paper's) from the
+/// thick tip to the step, `step` mm from the thick tip (mid-length by default), thin part
+/// r = thin_radius beyond it.
+RodProfile preset_rnt_profile(double thin_radius = kRntThinRadius, double step = kRntLength / 2,
+                              double thick_radius = kRntThickRadius);
+/// Where the RnT preset's step may lie, from the thick tip [mm], for given radii: far enough from
+/// the thick tip for one whole thick sphere, and from the thin tip for one thin sphere.
+double rnt_step_min(double thin_radius, double thick_radius = kRntThickRadius);
 double rnt_step_max(double thin_radius);
 /// `sphere_count` spheres, radii linear from thick_radius to thin_radius, `length` tip to tip [mm].
 RodProfile linear_taper_profile(double length, double thick_radius, double thin_radius,

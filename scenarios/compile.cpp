@@ -30,17 +30,36 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
   switch (shape.kind) {
     case ShapeSpec::Kind::preset:
       if (shape.preset.value == "RnT") {
+        const double thick = shape.thick_radius.value;
         const double thin = shape.thin_radius.value;
         const double step = shape.step.value;
-        if (step < engine::rnt_step_min(thin) || step > engine::rnt_step_max(thin)) {
-          diagnostics.error(
-              shape.step.where, shape.step.path,
-              "must be from " + mm(std::ceil(engine::rnt_step_min(thin) * 1e3) / 1e3) + " to " +
-                  mm(std::floor(engine::rnt_step_max(thin) * 1e3) / 1e3) + " with thin_radius " +
-                  mm(thin) + " (one whole sphere on each side of the step), got " + mm(step));
+        if (thin > thick) {
+          diagnostics.error(shape.thin_radius.where, shape.thin_radius.path,
+                            "must be <= thick_radius (" + mm(thick) + "), got " + mm(thin) +
+                                "; the RnT preset is thick from its thick tip to the step");
           return std::nullopt;
         }
-        return engine::preset_rnt_profile(thin, step);
+        const double step_min = engine::rnt_step_min(thin, thick);
+        const double step_max = engine::rnt_step_max(thin);
+        if (step_min > step_max) {
+          diagnostics.error(shape.thick_radius.where, shape.thick_radius.path,
+                            mm(thick) +
+                                " leaves no room for a step on the 3.5 mm RnT rod with "
+                                "thin_radius " +
+                                mm(thin) +
+                                " (thick_radius + sqrt(thick_radius^2 - thin_radius^2) must be at "
+                                "most 3.5 mm - thin_radius)");
+          return std::nullopt;
+        }
+        if (step < step_min || step > step_max) {
+          diagnostics.error(shape.step.where, shape.step.path,
+                            "must be from " + mm(std::ceil(step_min * 1e3) / 1e3) + " to " +
+                                mm(std::floor(step_max * 1e3) / 1e3) + " with thick_radius " +
+                                mm(thick) + " and thin_radius " + mm(thin) +
+                                " (one whole sphere on each side of the step), got " + mm(step));
+          return std::nullopt;
+        }
+        return engine::preset_rnt_profile(thin, step, thick);
       }
       return engine::preset_a_profile();
     case ShapeSpec::Kind::taper: {
@@ -183,30 +202,33 @@ void warn_unconverged_kick(const SpeciesSpec& species, double dt, Diagnostics& d
                           "use run.dt = 2.5e-5 s, or white noise (noise.white_Dr)");
 }
 
-/// An RnT outline with its step moved back from mid-length, or its thin part made thinner or
-/// thicker, has a gait that changes with dt up to a step of 3 mm (docs/model.md, "Where the RnT's
-/// step lies", item 4): a thin radius of 0.4 mm with the step at 2.25 mm runs forward at 22.8 mm/s
-/// at dt = 1e-4 s and shuttles, mostly backward, from 1.25e-5 s on. The preset's own outline is
-/// left unwarned: its speed moves by 20% with dt, its gait does not.
+/// An RnT outline moved off the preset's, its step from mid-length to 3 mm, has a gait that can
+/// change with dt (docs/model.md, "Where the RnT's step lies", item 4, and "The clearance to the
+/// lid", item 7): a thin radius of 0.4 mm with the step at 2.25 mm runs forward at 22.8 mm/s at
+/// dt = 1e-4 s and shuttles, mostly backward, from 1.25e-5 s on; RnT 1.0 mm thick runs in 54% of
+/// its windows at 1e-4 s and in 75% at 2.5e-5 s. The preset's own outline is left unwarned: its
+/// speed moves by 20% with dt, its gait does not; so are short thick parts, steady at every dt.
 void warn_unconverged_step(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
   constexpr double kLargestConvergedDt = 1.25e-5;        // [s]
   constexpr double kMidLength = engine::kRntLength / 2;  // the preset's step [mm]
   constexpr double kLongThickPart = 3.0;  // from here on the rod lies level and rattles [mm]
   const ShapeSpec& shape = species.shape;
-  if (!is_rnt_preset(species) || !(shape.step.given || shape.thin_radius.given) ||
-      dt <= kLargestConvergedDt * (1.0 + 1e-9))
-    return;
+  if (!is_rnt_preset(species) || dt <= kLargestConvergedDt * (1.0 + 1e-9)) return;
   const double step = shape.step.value;
   if (step < kMidLength - 1e-9 || step >= kLongThickPart) return;
-  if (std::abs(step - kMidLength) < 1e-9 &&
-      std::abs(shape.thin_radius.value - engine::kRntThinRadius) < 1e-9)
-    return;
-  const Sourced<double>& key = shape.step.given ? shape.step : shape.thin_radius;
+  const bool preset_outline = std::abs(step - kMidLength) < 1e-9 &&
+                              std::abs(shape.thin_radius.value - engine::kRntThinRadius) < 1e-9 &&
+                              std::abs(shape.thick_radius.value - engine::kRntThickRadius) < 1e-9;
+  if (preset_outline) return;
+  const Sourced<double>& key = shape.step.given          ? shape.step
+                               : shape.thin_radius.given ? shape.thin_radius
+                                                         : shape.thick_radius;
   diagnostics.warning(key.where, key.path,
-                      "an RnT rod with its step at " + mm(step) + " and thin_radius " +
-                          mm(shape.thin_radius.value) +
-                          " may change its gait with run.dt = " + format_real(dt) +
-                          " s: from the step at mid-length to 3 mm it did so in the step study "
+                      "an RnT outline other than the preset's (thick_radius " +
+                          mm(shape.thick_radius.value) + ", thin_radius " +
+                          mm(shape.thin_radius.value) + ", step " + mm(step) +
+                          ") may change its gait with run.dt = " + format_real(dt) +
+                          " s, as the step study's did from the step at mid-length to 3 mm "
                           "(docs/model.md, \"Where the RnT's step lies\"; thin_radius 0.4 mm with "
                           "the step at 2.25 mm runs forward at 1e-4 s and shuttles backward from "
                           "1.25e-5 s); check its gait with rodsort single at run.dt = 1.25e-5 s");

@@ -69,6 +69,7 @@ void write_shape(Writer& w, const ShapeSpec& shape) {
     case ShapeSpec::Kind::preset:
       w.key("preset").word(shape.preset.value);
       if (shape.preset.value == "RnT") {
+        w.key("thick_radius").number(shape.thick_radius.value);
         w.key("thin_radius").number(shape.thin_radius.value);
         w.key("step").number(shape.step.value);
       }

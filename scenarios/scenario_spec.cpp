@@ -25,6 +25,7 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
     diagnostics.error(shape.where(), shape.path(),
                       "give one of preset, taper or spheres, not several");
   }
+  out.thick_radius = shape.real("thick_radius");
   out.thin_radius = shape.real("thin_radius");
   out.step = shape.real("step");
   if (has_taper) {
@@ -43,6 +44,10 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
     if (!out.preset.given) out.preset.value = "A";
   }
   const bool rnt = out.kind == ShapeSpec::Kind::preset && out.preset.value == "RnT";
+  if (shape.has("thick_radius") && !rnt) {
+    diagnostics.error(shape.location_of("thick_radius"), shape.path_of("thick_radius"),
+                      "applies to `preset: RnT` only (use taper.thick_radius for a taper)");
+  }
   if (shape.has("thin_radius") && !rnt) {
     diagnostics.error(shape.location_of("thin_radius"), shape.path_of("thin_radius"),
                       "applies to `preset: RnT` only (use taper.thin_radius for a taper)");

@@ -22,6 +22,7 @@ struct ShapeSpec {
   enum class Kind { preset, taper, spheres };
   Kind kind = Kind::preset;
   Sourced<std::string> preset;         ///< "A" or "RnT"
+  Sourced<double> thick_radius;        ///< RnT's thick part [mm]
   Sourced<double> thin_radius;         ///< RnT's thin part [mm]
   Sourced<double> step;                ///< RnT's step, from the thick tip [mm]
   Sourced<double> taper_length;        ///< tip to tip [mm]

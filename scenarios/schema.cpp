@@ -105,15 +105,18 @@ std::vector<KeyInfo> scenario_keys() {
        "Profile of the rod: a `preset`, a `taper`, or explicit `spheres` (one of the three)."},
       {"species[].shape.preset", V::choice, "", "", {}, {"A", "RnT"},
        "A: the paper's rod, 9 spheres with radii 0.55 -> 0.20 mm, 4.5 mm tip to tip. RnT: 3.5 mm, "
-       "r = 0.55 mm from the thick tip to the step, r = thin_radius beyond it.",
+       "r = thick_radius from the thick tip to the step, r = thin_radius beyond it.",
        "A, when neither taper nor spheres is given"},
-      {"species[].shape.thin_radius", V::real, "mm", "0.3", half_open(0, 0.55), {},
-       "Radius of the thin part of the RnT preset (RnT only)."},
+      {"species[].shape.thick_radius", V::real, "mm", "0.55", half_open(0, 1.75), {},
+       "Radius of the thick part of the RnT preset (RnT only): the paper's 1.1 mm thick. With the "
+       "lid it sets RnT's clearance (docs/model.md, \"The clearance to the lid\")."},
+      {"species[].shape.thin_radius", V::real, "mm", "0.3", positive(), {},
+       "Radius of the thin part of the RnT preset (RnT only), at most thick_radius."},
       {"species[].shape.step", V::real, "mm", "1.75", positive(), {},
        "Where the RnT preset's single step lies, from its thick tip (RnT only; the paper gives no "
-       "figure, mid-length by default). From 0.55 + sqrt(0.55^2 - thin_radius^2) to "
-       "3.5 - thin_radius: one whole sphere on each side. Moved back from mid-length (to 3 mm), or "
-       "with another thin_radius, RnT's gait may change with run.dt, and validate warns above "
+       "figure, mid-length by default). From thick_radius + sqrt(thick_radius^2 - thin_radius^2) "
+       "to 3.5 - thin_radius: one whole sphere on each side. Moved back from mid-length (to 3 mm), or "
+       "with other radii, RnT's gait may change with run.dt, and validate warns above "
        "run.dt = 1.25e-5 s (docs/model.md, \"Where the RnT's step lies\")."},
       {"species[].shape.taper", V::section, "", "", {}, {},
        "A linear taper: spheres with radii linear from the thick to the thin end."},

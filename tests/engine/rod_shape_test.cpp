@@ -214,31 +214,34 @@ TEST_CASE("rod RnT steps from the thick to the thin radius at mid-length", "[rod
 
 TEST_CASE("rod RnT's step can lie anywhere that leaves a whole sphere on each side",
           "[rod_shape]") {
-  for (const double thin : {0.2, 0.3, 0.4}) {
-    for (const double step : {rnt_step_min(thin), 1.3, 1.75, 2.5, rnt_step_max(thin)}) {
-      CAPTURE(thin, step);
-      const RodProfile profile = preset_rnt_profile(thin, step);
-      const RodShape shape = make_rod_shape(profile, kBrassDensity);
-      CHECK(shape.length == Approx(3.5));
-      CHECK(profile.spheres.front().axial - profile.spheres.front().radius ==
-            Approx(0.0).margin(1e-12));
-      for (const Sphere& sphere : profile.spheres) {
-        if (sphere.radius == Approx(0.55)) CHECK(sphere.axial < step);
-        if (sphere.radius == Approx(thin)) CHECK(sphere.axial >= step - 1e-12);
-      }
-      // The last thick sphere's outline comes down to the thin radius at the step.
-      const auto first_thin = std::find_if(profile.spheres.begin(), profile.spheres.end(),
-                                           [thin](const Sphere& s) { return s.radius == thin; });
-      REQUIRE(first_thin != profile.spheres.begin());
-      const Sphere& last_thick = *(first_thin - 1);
-      CHECK(std::sqrt(0.55 * 0.55 - (step - last_thick.axial) * (step - last_thick.axial)) ==
-            Approx(thin));
-      // One piece, and no sphere twice.
-      for (std::size_t i = 0; i + 1 < profile.spheres.size(); ++i) {
-        const Sphere& p = profile.spheres[i];
-        const Sphere& q = profile.spheres[i + 1];
-        CHECK(q.axial - p.axial < 0.9 * (p.radius + q.radius));
-        CHECK(q.axial - p.axial > 1e-9);
+  for (const double thick : {0.45, 0.55}) {
+    for (const double thin : {0.2, 0.3, 0.4}) {
+      for (const double step : {rnt_step_min(thin, thick), 1.3, 1.75, 2.5, rnt_step_max(thin)}) {
+        CAPTURE(thick, thin, step);
+        const RodProfile profile = preset_rnt_profile(thin, step, thick);
+        const RodShape shape = make_rod_shape(profile, kBrassDensity);
+        CHECK(shape.length == Approx(3.5));
+        CHECK(profile.spheres.front().axial - profile.spheres.front().radius ==
+              Approx(0.0).margin(1e-12));
+        for (const Sphere& sphere : profile.spheres) {
+          if (sphere.radius == Approx(thick)) CHECK(sphere.axial < step);
+          if (sphere.radius == Approx(thin)) CHECK(sphere.axial >= step - 1e-12);
+        }
+        // The last thick sphere's outline comes down to the thin radius at the step.
+        const auto first_thin = std::find_if(profile.spheres.begin(), profile.spheres.end(),
+                                             [thin](const Sphere& s) { return s.radius == thin; });
+        REQUIRE(first_thin != profile.spheres.begin());
+        const Sphere& last_thick = *(first_thin - 1);
+        CHECK(last_thick.radius == thick);
+        CHECK(std::sqrt(thick * thick - (step - last_thick.axial) * (step - last_thick.axial)) ==
+              Approx(thin));
+        // One piece, and no sphere twice.
+        for (std::size_t i = 0; i + 1 < profile.spheres.size(); ++i) {
+          const Sphere& p = profile.spheres[i];
+          const Sphere& q = profile.spheres[i + 1];
+          CHECK(q.axial - p.axial < 0.9 * (p.radius + q.radius));
+          CHECK(q.axial - p.axial > 1e-9);
+        }
       }
     }
   }
@@ -249,6 +252,10 @@ TEST_CASE("rod RnT's step can lie anywhere that leaves a whole sphere on each si
   CHECK(-long_thick.thick_tip > -short_thick.thick_tip);
   CHECK_THROWS_AS(preset_rnt_profile(0.3, rnt_step_min(0.3) - 1e-3), std::invalid_argument);
   CHECK_THROWS_AS(preset_rnt_profile(0.3, rnt_step_max(0.3) + 1e-3), std::invalid_argument);
+  // A thinner thick part: a lighter rod; and the thin part may not be thicker than it.
+  CHECK(make_rod_shape(preset_rnt_profile(0.3, 1.75, 0.5), kBrassDensity).mass <
+        make_rod_shape(preset_rnt_profile(0.3, 1.75), kBrassDensity).mass);
+  CHECK_THROWS_AS(preset_rnt_profile(0.3, 1.75, 0.25), std::invalid_argument);
 }
 
 TEST_CASE("invalid profiles and densities are rejected", "[rod_shape]") {

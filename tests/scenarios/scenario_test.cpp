@@ -248,8 +248,10 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
 TEST_CASE("the RnT step is checked against the thin radius and applies to RnT only", "[scenario]") {
   const std::string rnt =
       "species: [{shape: {preset: RnT, thin_radius: 0.3, step: 3.3}, count: 3}]\n";
-  CHECK_THAT(errors_of(rnt), Catch::Contains("test.yaml:1:57: species[0].shape.step: must be "
-                                             "from 1.011 mm to 3.2 mm with thin_radius 0.3 mm"));
+  CHECK_THAT(
+      errors_of(rnt),
+      Catch::Contains("test.yaml:1:57: species[0].shape.step: must be "
+                      "from 1.011 mm to 3.2 mm with thick_radius 0.55 mm and thin_radius 0.3 mm"));
   CHECK_THAT(errors_of(rnt, {"species[0].shape.step=1"}),
              Catch::Contains("species[0].shape.step: must be from 1.011 mm"));
   load_ok("species: [{shape: {preset: RnT, thin_radius: 0.3, step: 3.2}, count: 3}]\n");
@@ -257,6 +259,34 @@ TEST_CASE("the RnT step is checked against the thin radius and applies to RnT on
              Catch::Contains("species[0].shape.step: applies to `preset: RnT` only"));
   const Scenario mid = load_ok("species: [{shape: {preset: RnT}, count: 3}]\n");
   CHECK_THAT(resolved_yaml(mid), Catch::Contains("step: 1.75"));
+  CHECK_THAT(resolved_yaml(mid), Catch::Contains("thick_radius: 0.55"));
+}
+
+TEST_CASE("the RnT thick radius sets the thick part and bounds the thin one and the step",
+          "[scenario]") {
+  const std::string rnt = "species: [{shape: {preset: RnT, thick_radius: 0.5}, count: 3}]\n";
+  const Scenario thinner = load_ok(rnt + "run: {dt: 1.25e-5}\n");
+  const Scenario preset = load_ok("species: [{shape: {preset: RnT}, count: 3}]\n");
+  // The thick spheres shrink, the thin ones stay; so the rod is lighter and the same length.
+  const engine::RodShape& changed = thinner.model.species[0].shape;
+  const engine::RodShape& kept = preset.model.species[0].shape;
+  CHECK(changed.mass < kept.mass);
+  CHECK(changed.length == Approx(kept.length).epsilon(1e-12));
+  double widest = 0.0;
+  for (const engine::Sphere& sphere : changed.spheres) widest = std::max(widest, sphere.radius);
+  CHECK(widest == 0.5);
+  CHECK_THAT(resolved_yaml(thinner), Catch::Contains("thick_radius: 0.5"));
+  CHECK_THAT(errors_of("species: [{shape: {preset: RnT, thick_radius: 0.25}, count: 3}]\n"),
+             Catch::Contains("species[0].shape.thin_radius: must be <= thick_radius (0.25 mm), "
+                             "got 0.3 mm"));
+  CHECK_THAT(errors_of("species: [{shape: {preset: RnT, thick_radius: 1.7}, count: 3}]\n"),
+             Catch::Contains("species[0].shape.thick_radius: 1.7 mm leaves no room for a step"));
+  const std::string early =
+      errors_of("species: [{shape: {preset: RnT, thick_radius: 0.5, step: 0.8}}]\n");
+  CHECK_THAT(early, Catch::Contains("species[0].shape.step: must be from 0.9"));
+  CHECK_THAT(early, Catch::Contains("with thick_radius 0.5 mm and thin_radius 0.3 mm"));
+  CHECK_THAT(errors_of("species: [{shape: {preset: A, thick_radius: 0.5}}]\n"),
+             Catch::Contains("species[0].shape.thick_radius: applies to `preset: RnT` only"));
 }
 
 TEST_CASE("the resolved paper scenario states the derived values", "[scenario][resolved]") {
@@ -312,19 +342,26 @@ TEST_CASE("RnT outlines whose gait changes with dt are warned about at a large d
   CHECK(coarse.diagnostics[0].severity == Severity::warning);
   CHECK_THAT(
       coarse.diagnostics[0].to_string(),
-      Catch::Contains("s.yaml:1:66: warning: species[0].shape.step: an RnT rod with its step "
-                      "at 2.25 mm and thin_radius 0.4 mm may change its gait with run.dt = "
-                      "1e-4 s"));
+      Catch::Contains("s.yaml:1:66: warning: species[0].shape.step: an RnT outline other than "
+                      "the preset's (thick_radius 0.55 mm, thin_radius 0.4 mm, step 2.25 mm) may "
+                      "change its gait with run.dt = 1e-4 s"));
   // Only the thin radius moved, the step left at mid-length: the warning names thin_radius.
   const LoadResult thin = load_scenario_text(rnt(", thin_radius: 0.2"), "s.yaml");
   REQUIRE(thin.diagnostics.size() == 1);
   CHECK_THAT(thin.diagnostics[0].to_string(), Catch::Contains("species[0].shape.thin_radius: "));
+  // Only the thick radius: it names thick_radius.
+  const LoadResult thick = load_scenario_text(rnt(", thick_radius: 0.5"), "s.yaml");
+  REQUIRE(thick.diagnostics.size() == 1);
+  CHECK_THAT(thick.diagnostics[0].to_string(),
+             Catch::Contains("species[0].shape.thick_radius: an RnT outline other than the "
+                             "preset's (thick_radius 0.5 mm, thin_radius 0.3 mm, step 1.75 mm)"));
   // Resolved at 1.25e-5 s; the preset's own outline, written out or not; a short thick part,
   // which runs steadily at every dt; a long one, which lies level and rattles.
   CHECK(load_scenario_text(rnt(", thin_radius: 0.4, step: 2.25") + "run: {dt: 1.25e-5}\n", "s.yaml")
             .diagnostics.empty());
   CHECK(load_scenario_text(rnt(""), "s.yaml").diagnostics.empty());
-  CHECK(load_scenario_text(rnt(", thin_radius: 0.3, step: 1.75"), "s.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(rnt(", thick_radius: 0.55, thin_radius: 0.3, step: 1.75"), "s.yaml")
+            .diagnostics.empty());
   CHECK(load_scenario_text(rnt(", step: 1.5"), "s.yaml").diagnostics.empty());
   CHECK(load_scenario_text(rnt(", step: 3.0"), "s.yaml").diagnostics.empty());
   CHECK(load_scenario_text(rnt(", step: 2.99"), "s.yaml").diagnostics.size() == 1);
