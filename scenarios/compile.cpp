@@ -207,7 +207,7 @@ void warn_unconverged_kick(const SpeciesSpec& species, double dt, Diagnostics& d
 /// lid", item 7): a thin radius of 0.4 mm with the step at 2.25 mm runs forward at 22.8 mm/s at
 /// dt = 1e-4 s and shuttles, mostly backward, from 1.25e-5 s on; RnT 1.0 mm thick runs in 54% of
 /// its windows at 1e-4 s and in 75% at 2.5e-5 s. The preset's own outline is left unwarned: its
-/// speed moves by 20% with dt, its gait does not; so are short thick parts, steady at every dt.
+/// speed moves by 20% with dt, its gait does not; as are short thick parts, steady at every dt.
 void warn_unconverged_step(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
   constexpr double kLargestConvergedDt = 1.25e-5;        // [s]
   constexpr double kMidLength = engine::kRntLength / 2;  // the preset's step [mm]
