@@ -25,6 +25,17 @@ def inside_trap(points, trap):
             & (cross(right - left, relative - left) <= 0))
 
 
+def held_rods(inside, unwrapped, lag, distance):
+    """The metrics layer's held rods (docs/metrics.md, "Held rods") over frames [frames, rods]:
+    inside the trap and moved less than `distance` over the last `lag` frames; none in the first
+    `lag` frames. `unwrapped` is [frames, rods, 2]."""
+    held = np.zeros(inside.shape, dtype=bool)
+    if lag < len(inside):
+        moved = np.linalg.norm(unwrapped[lag:] - unwrapped[:-lag], axis=-1)
+        held[lag:] = inside[lag:] & (moved < distance)
+    return held
+
+
 def resolved_block(text, name):
     """The `key: value` lines of a top-level block of scenario.resolved.yaml, values as JSON (the
     resolved file writes numbers and flow lists, which JSON reads)."""
