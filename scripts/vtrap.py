@@ -1,8 +1,10 @@
-"""The V trap's inside, as the metrics layer decides it (trap/v_trap.cpp, VTrap::contains), and
-the blocks of a run's scenario.resolved.yaml that say where it is, for the Python scripts beside
-this file: `from vtrap import inside_trap, resolved_block`."""
+"""The V trap's inside, as the metrics layer decides it (trap/v_trap.cpp, VTrap::contains), the
+blocks of a run's scenario.resolved.yaml that say where it is, the held rods, and the spheres of
+trajectory.dump's last frame, for the Python scripts beside this file:
+`from vtrap import inside_trap, resolved_block`."""
 import json
 import math
+import sys
 import re
 
 import numpy as np
@@ -55,3 +57,24 @@ def species_names(text):
     """The species' names of scenario.resolved.yaml, in order (their index in rods.h5)."""
     block = re.search(r"^species:\n((?:[ -].*\n)+)", text, re.MULTILINE)
     return re.findall(r"^  - name: (\S+)$", block.group(1), re.MULTILINE) if block else []
+
+
+def last_dump_frame(path):
+    """{rod: [(x, y, z, radius), ...]} of trajectory.dump's last frame, spheres in the order
+    written; exits with a message where the run wrote no dump."""
+    try:
+        lines = path.read_text().splitlines()
+    except OSError as error:
+        sys.exit(f"{path}: {error.strerror}; run with output.trajectory_interval > 0")
+    starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")]
+    if not starts:
+        sys.exit(f"{path}: no ITEM: ATOMS block")
+    columns = lines[starts[-1]].split()[2:]
+    spheres = {}
+    for line in lines[starts[-1] + 1:]:
+        if line.startswith("ITEM:"):
+            break
+        row = dict(zip(columns, line.split()))
+        spheres.setdefault(int(row["mol"]) - 1, []).append(
+            tuple(float(row[k]) for k in ("x", "y", "z", "radius")))
+    return spheres
