@@ -12,7 +12,8 @@
 
 namespace rodsort::engine {
 
-/// Vertical drive of base and lid: z_base(t) = amplitude cos(2 pi frequency t), z_lid = z_base + gap.
+/// Vertical drive of base and lid: z_base(t) = amplitude cos(2 pi frequency t), z_lid = z_base +
+/// gap.
 struct Drive {
   double frequency;  ///< [Hz], paper: 200
   double amplitude;  ///< [mm], paper: Gamma = 7 -> 0.0435
@@ -42,6 +43,10 @@ struct RodInit {
   int species;     ///< index into Model::species
   double x, y;     ///< centre of mass in the cell [mm]
   double heading;  ///< direction from the thick to the thin end, in the plane [rad]
+  /// Turn about the rod's own axis [rad], counter-clockwise seen from the thin end: at 0 the body
+  /// y axis lies in the plane, to the left of the heading. It matters only for a rod that is not
+  /// straight (RodShape::spheres with an offset), whose off-axis part it places.
+  double roll = 0.0;
 };
 
 /// A static vertical wall spanning the gap (trap arms and other obstacles), a box in 3D.

@@ -15,18 +15,21 @@ RodGeometry::RodGeometry(const RodShape& shape) {
   for (const Sphere& sphere : shape.spheres) {
     axial.push_back(sphere.axial);
     radius.push_back(sphere.radius);
+    lateral.push_back(sphere.lateral);
+    max_lateral = std::max(max_lateral, std::abs(sphere.lateral));
     max_radius = std::max(max_radius, sphere.radius);
     axial_min = std::min(axial_min, sphere.axial);
     axial_max = std::max(axial_max, sphere.axial);
   }
+  straight = max_lateral == 0.0;
   ascending = std::is_sorted(axial.begin(), axial.end());
   if (axial_max > axial_min) {
     inverse_spacing = static_cast<double>(axial.size() - 1) / (axial_max - axial_min);
   }
   axial_center = 0.5 * (axial_min + axial_max);
   for (const Sphere& sphere : shape.spheres) {
-    bounding_radius =
-        std::max(bounding_radius, std::abs(sphere.axial - axial_center) + sphere.radius);
+    bounding_radius = std::max(
+        bounding_radius, std::hypot(sphere.axial - axial_center, sphere.lateral) + sphere.radius);
   }
 }
 

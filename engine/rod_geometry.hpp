@@ -1,7 +1,8 @@
 #pragma once
 // The spheres of a rod in its body frame, laid out for the collision algorithms: Bullet's compound
 // shape keeps a full transform and a shape pointer per child, while a rod only needs each sphere's
-// position on the body x axis and its radius. Attached to the rod's btCompoundShape as its user
+// position on the body x axis, its radius and, for a rod that is not straight, its offset along the
+// body y axis. Attached to the rod's btCompoundShape as its user
 // pointer, so that an algorithm handed a collision object finds it without a lookup.
 
 #include <cstddef>
@@ -16,10 +17,16 @@ namespace rodsort::engine {
 struct RodGeometry {
   std::vector<double> axial;   ///< sphere centres on the body x axis, in the compound's order [mm]
   std::vector<double> radius;  ///< [mm]
-  double max_radius = 0.0;     ///< [mm]
-  double axial_min = 0.0;      ///< the axis segment through every centre, from axial_min
-  double axial_max = 0.0;      ///< to axial_max [mm]
-  double axial_center = 0.0;   ///< centre of the sphere that bounds the rod, on the axis [mm]
+  /// Offsets of the centres along the body y axis [mm]; all 0 for a straight rod.
+  std::vector<double> lateral;
+  /// Whether every centre lies on the axis: the algorithms then leave the offsets out.
+  bool straight = true;
+  /// The largest |lateral|: every centre lies within this of the axis segment below [mm].
+  double max_lateral = 0.0;
+  double max_radius = 0.0;       ///< [mm]
+  double axial_min = 0.0;        ///< the axis segment through every centre, from axial_min
+  double axial_max = 0.0;        ///< to axial_max [mm]
+  double axial_center = 0.0;     ///< centre of the sphere that bounds the rod, on the axis [mm]
   double bounding_radius = 0.0;  ///< its radius [mm]
   /// Whether `axial` ascends (every preset and profile-built rod): then the spheres near a point
   /// of the axis are found by first_at_or_beyond and first_beyond.

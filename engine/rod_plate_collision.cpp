@@ -15,6 +15,9 @@
 // envelope is a cone, tangent to the plate along a line), hence one manifold per sphere rather than
 // one per rod.
 //
+// A sphere off the rod's axis (a rod that is not straight, rod_shape.hpp) adds its offset along the
+// body y axis to its centre; a straight rod's algorithm leaves that term out.
+//
 // A rough plate (plate_roughness.hpp) is met through its tangent plane under each sphere's centre:
 // the normal is that of the surface h(x, y) at the centre's (x, y), and the depth is the sphere's
 // distance to that plane. For the slopes allowed (at most 0.3 rad) and spheres small against the
@@ -79,9 +82,15 @@ void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
   const btVector3 normal(0.0, 0.0, base ? 1.0 : -1.0);
 
   int kept = 0;  // manifolds that exist and may need releasing below
-  for (std::size_t i = 0; i < manifolds_.size(); ++i) {
-    // The height of pose * (axial, 0, 0), written out; the rest of the centre only on contact.
+  const btVector3 body_y = pose.getBasis().getColumn(1);
+  const auto height_of = [&](std::size_t i) {
+    // The height of pose * (axial, lateral, 0), written out; the rest of the centre only on
+    // contact.
     const double center_z = axis.z() * geometry.axial[i] + origin.z();
+    return geometry.straight ? center_z : center_z + body_y.z() * geometry.lateral[i];
+  };
+  for (std::size_t i = 0; i < manifolds_.size(); ++i) {
+    const double center_z = height_of(i);
     const double r = geometry.radius[i];
     const double depth = base ? (center_z - r) - surface : surface - (center_z + r);
     btPersistentManifold*& manifold = manifolds_[i];
@@ -89,8 +98,12 @@ void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
       kept += manifold != nullptr;
       continue;
     }
-    const double center_x = axis.x() * geometry.axial[i] + origin.x();
-    const double center_y = axis.y() * geometry.axial[i] + origin.y();
+    double center_x = axis.x() * geometry.axial[i] + origin.x();
+    double center_y = axis.y() * geometry.axial[i] + origin.y();
+    if (!geometry.straight) {
+      center_x += body_y.x() * geometry.lateral[i];
+      center_y += body_y.y() * geometry.lateral[i];
+    }
     add_sphere_contact(*m_dispatcher, manifold, rod->getCollisionObject(),
                        plate->getCollisionObject(), rod_is_body0_, static_cast<int>(i), *result,
                        normal, btVector3(center_x, center_y, surface), depth);
@@ -103,7 +116,7 @@ void RodPlateCollision::processCollision(const btCollisionObjectWrapper* body0,
   for (std::size_t i = 0; kept > 0 && i < manifolds_.size(); ++i) {
     btPersistentManifold*& manifold = manifolds_[i];
     if (!manifold) continue;
-    const double center_z = axis.z() * geometry.axial[i] + origin.z();
+    const double center_z = height_of(i);
     const double r = geometry.radius[i];
     const double depth = base ? (center_z - r) - surface : surface - (center_z + r);
     if (depth > 0.0) {
@@ -123,13 +136,18 @@ void RodPlateCollision::process_rough(const PlateRoughness& roughness, bool base
   const double surface = base ? box_surface - roughness.reach() : box_surface + roughness.reach();
   const double side = base ? 1.0 : -1.0;
   const btVector3 axis = pose.getBasis().getColumn(0);
+  const btVector3 body_y = pose.getBasis().getColumn(1);
   const btVector3& origin = pose.getOrigin();
   struct Contact {
     btVector3 normal, point;
     double depth;
   };
-  const auto contact_of = [&](std::size_t i) {
+  const auto center_of = [&](std::size_t i) {
     const btVector3 center = origin + axis * geometry.axial[i];
+    return geometry.straight ? center : center + body_y * geometry.lateral[i];
+  };
+  const auto contact_of = [&](std::size_t i) {
+    const btVector3 center = center_of(i);
     const PlateRoughness::Surface local = roughness.at(center.x(), center.y());
     // Normal on the plate toward the rod: the surface's upward normal, turned down for the lid.
     const btVector3 normal = btVector3(-local.slope_x, -local.slope_y, 1.0).normalized() * side;
@@ -144,7 +162,7 @@ void RodPlateCollision::process_rough(const PlateRoughness& roughness, bool base
   int kept = 0;
   for (std::size_t i = 0; i < manifolds_.size(); ++i) {
     btPersistentManifold*& manifold = manifolds_[i];
-    const double center_z = axis.z() * geometry.axial[i] + origin.z();
+    const double center_z = center_of(i).z();
     const double gap = side * (center_z - surface) - geometry.radius[i];
     if (gap > roughness.reach() + tilt_excess * geometry.radius[i]) {
       clear_[i] = 1;

@@ -17,6 +17,10 @@
 // manifold per rod pair instead of one per sphere pair, created and released at other moments),
 // which changes results at the level of the solver's convergence, not the contacts.
 //
+// A rod that is not straight (rod_shape.hpp) has spheres off its axis, each within max_lateral of
+// it: the bounding capsule and the cheap bounds below are widened by that, and the exact test adds
+// each centre's offset along the body y axis.
+//
 // Pairs apart stay apart for a while. In a pile a rod has some five neighbours within its bounding
 // box and touches few of them; most pairs the broadphase hands over make no point, step after step.
 // Each test that makes no point also gives the gap between the two rods (a lower bound: exact for
@@ -87,7 +91,8 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
     apart_.tested(between.length() - spheres_reach);
     return;
   }
-  const double capsule_reach = geometry0.max_radius + geometry1.max_radius;
+  const double capsule_reach =
+      geometry0.max_radius + geometry0.max_lateral + geometry1.max_radius + geometry1.max_lateral;
   const double capsules = segment_distance_squared(axis0 * geometry0.axial_min + pose0.getOrigin(),
                                                    axis0 * geometry0.axial_max + pose0.getOrigin(),
                                                    axis1 * geometry1.axial_min + pose1.getOrigin(),
@@ -106,17 +111,21 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
   double friction = 0.0, restitution = 0.0, rolling_friction = 0.0, spinning_friction = 0.0;
   std::size_t points = 0;
   double gap = kSkin;  // the least of the sphere pairs' gaps, or the skin
+  const btVector3 side0 = pose0.getBasis().getColumn(1);
+  const btVector3 side1 = pose1.getBasis().getColumn(1);
   for (std::size_t i = 0; i < geometry0.axial.size(); ++i) {
-    // pose * (axial, 0, 0), written out.
-    const btVector3 center0 = axis0 * geometry0.axial[i] + pose0.getOrigin();
+    // pose * (axial, lateral, 0), written out.
+    btVector3 center0 = axis0 * geometry0.axial[i] + pose0.getOrigin();
+    if (!geometry0.straight) center0 += side0 * geometry0.lateral[i];
     const double radius0 = geometry0.radius[i];
     // Sphere j of body 1 is at a distance sqrt(across^2 + (axial_j - along)^2) from this centre,
-    // measured along and across body 1's axis: a cheap bound before the exact test.
+    // measured along and across body 1's axis, less at most its offset from that axis: a cheap
+    // bound before the exact test.
     const btVector3 from_origin1 = center0 - pose1.getOrigin();
     const double along = from_origin1.dot(axis1);
     const double across2 = from_origin1.length2() - along * along;
     // Bounds widened by the skin: a sphere pair they skip is apart by more than the skin.
-    const double farthest = radius0 + geometry1.max_radius + kSkin;
+    const double farthest = radius0 + geometry1.max_radius + geometry1.max_lateral + kSkin;
     const double bound = kClearlyApart * farthest * farthest + kRoundingArea;
     if (across2 > bound) continue;
     // Spheres of body 1 farther along its axis than `reach` from `along` fail the bound below for
@@ -133,10 +142,11 @@ void RodRodCollision::processCollision(const btCollisionObjectWrapper* body0,
       const double radius1 = geometry1.radius[j];
       const double touching = radius0 + radius1;
       const double offset = geometry1.axial[j] - along;
-      const double near = touching + kSkin;
+      const double near = touching + kSkin + geometry1.max_lateral;
       if (across2 + offset * offset > kClearlyApart * near * near + kRoundingArea) continue;
       // The exact test, as btSphereSphereCollisionAlgorithm makes it.
-      const btVector3 center1 = axis1 * geometry1.axial[j] + pose1.getOrigin();
+      btVector3 center1 = axis1 * geometry1.axial[j] + pose1.getOrigin();
+      if (!geometry1.straight) center1 += side1 * geometry1.lateral[j];
       const btVector3 difference = center1 - center0;
       const double length = difference.length();
       if (length > touching) {  // a point only for spheres that touch

@@ -1,6 +1,7 @@
 #pragma once
-// A rod is a union of spheres centred on its axis. Its mass, centre of mass and inertia are those
-// of the union (overlaps counted once), not the sum of the spheres.
+// A rod is a union of spheres, centred on its axis or, for a rod that is not straight, off it in
+// one plane. Its mass, centre of mass and inertia are those of the union (overlaps counted once),
+// not the sum of the spheres.
 
 #include <string>
 #include <vector>
@@ -14,8 +15,12 @@ inline constexpr double kRntThinRadius = 0.3;  ///< the preset's thin part [mm]
 
 /// One sphere of a rod profile.
 struct Sphere {
-  double axial;   ///< position of the centre on the rod axis [mm]; grows from the thick to the thin end
+  double
+      axial;  ///< position of the centre on the rod axis [mm]; grows from the thick to the thin end
   double radius;  ///< [mm]
+  /// Offset of the centre from the axis, along the body's y axis [mm]: 0 for a straight rod. Every
+  /// off-axis sphere lies in the body's x-y plane.
+  double lateral = 0.0;
 };
 
 /// The spheres of a rod, in any axial frame (the shape recentres them on the centre of mass).
@@ -28,8 +33,9 @@ RodProfile preset_a_profile();
 /// Paper RnT rod: 3.5 mm tip to tip, thick part r = thick_radius (0.55 mm, the paper's) from the
 /// thick tip to the step, `step` mm from the thick tip (mid-length by default), thin part
 /// r = thin_radius beyond it.
+/// `thin_offset`: the thin part's axis lies that far from the thick part's, parallel to it [mm].
 RodProfile preset_rnt_profile(double thin_radius = kRntThinRadius, double step = kRntLength / 2,
-                              double thick_radius = kRntThickRadius);
+                              double thick_radius = kRntThickRadius, double thin_offset = 0.0);
 /// Where the RnT preset's step may lie, from the thick tip [mm], for given radii: far enough from
 /// the thick tip for one whole thick sphere, and from the thin tip for one thin sphere.
 double rnt_step_min(double thin_radius, double thick_radius = kRntThickRadius);
@@ -38,23 +44,34 @@ double rnt_step_max(double thin_radius);
 RodProfile linear_taper_profile(double length, double thick_radius, double thin_radius,
                                 int sphere_count);
 
+/// Whether every sphere is centred on the axis (no lateral offset).
+bool is_straight(const std::vector<Sphere>& spheres);
+
 /// A rod ready for the engine: spheres relative to the centre of mass, and the mass properties of
-/// their union.
+/// their union. The body axes are the union's principal axes: for a straight rod x is the rod's
+/// axis; for one with off-axis spheres, x is its axis of least inertia, which leans from the
+/// profile's axis by `axis_lean` within the plane of the offsets.
 struct RodShape {
-  std::vector<Sphere> spheres;  ///< axial positions measured from the centre of mass [mm]
-  double density;               ///< [g/mm^3]
-  double volume;                ///< of the union [mm^3]
-  double mass;                  ///< [g]
-  double inertia_axial;         ///< about the axis through the centre of mass [g mm^2]
-  double inertia_transverse;    ///< about any perpendicular axis through the centre of mass [g mm^2]
-  double projected_area;        ///< area of the 2D projection on the plate (union of discs) [mm^2]
-  double length;                ///< tip to tip [mm]
-  double max_radius;            ///< largest sphere radius [mm]
-  double thick_tip;             ///< axial position of the thick tip, from the centre of mass [mm] (<0)
-  double thin_tip;              ///< axial position of the thin tip, from the centre of mass [mm] (>0)
+  std::vector<Sphere>
+      spheres;                ///< positions measured from the centre of mass, on the body axes [mm]
+  double density;             ///< [g/mm^3]
+  double volume;              ///< of the union [mm^3]
+  double mass;                ///< [g]
+  double inertia_axial;       ///< about the body x axis through the centre of mass [g mm^2]
+  double inertia_transverse;  ///< about the body y axis through the centre of mass [g mm^2]
+  double
+      inertia_normal;  ///< about the body z axis, = inertia_transverse for a straight rod [g mm^2]
+  double axis_lean;    ///< angle from the profile's axis to the body x axis [rad]
+  double projected_area;  ///< area of the union's outline in the body x-y plane [mm^2]
+  double length;          ///< tip to tip [mm]
+  double max_radius;      ///< largest sphere radius [mm]
+  double thick_tip;       ///< axial position of the thick tip, from the centre of mass [mm] (<0)
+  double thin_tip;        ///< axial position of the thin tip, from the centre of mass [mm] (>0)
 };
 
-/// Computes the union's mass properties and recentres the profile on its centre of mass.
+/// Computes the union's mass properties and recentres the profile on its centre of mass, turned
+/// onto its principal axes. Exact up to rounding for a straight rod; with off-axis spheres the
+/// integrals are taken on a grid across the rod, to a few parts in 10^5 (rod_shape.cpp).
 RodShape make_rod_shape(const RodProfile& profile, double density);
 
 }  // namespace rodsort::engine

@@ -18,6 +18,9 @@
 // the wall's bounding box (some 700 of them in the paper's system), so the solver meets the
 // contacts in another order.
 //
+// A rod that is not straight is bounded by its axis segment thickened by its largest radius plus
+// its spheres' largest offset from the axis, and each sphere's centre adds that offset.
+//
 // A rod with no sphere within the contact-breaking distance gives the gap by which it stays out of
 // it, and the pair is not tested again until the rod has travelled that far (apart_pair.hpp; the
 // wall does not move): a skipped test is one that would have made nothing, as for rod pairs
@@ -87,7 +90,7 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
   // The rod's axis segment in the wall's frame, bounded by a box grown by the largest radius.
   const btVector3 end0 = wall_pose.invXform(axis * geometry.axial_min + pose.getOrigin());
   const btVector3 end1 = wall_pose.invXform(axis * geometry.axial_max + pose.getOrigin());
-  const double reach = geometry.max_radius + margin + breaking_threshold_;
+  const double reach = geometry.max_radius + geometry.max_lateral + margin + breaking_threshold_;
   // Apart along some axis of the wall's frame by `separation` > 0: every sphere's distance from
   // the wall exceeds the breaking distance by at least that.
   double separation = -std::numeric_limits<double>::infinity();
@@ -102,8 +105,11 @@ void RodWallCollision::processCollision(const btCollisionObjectWrapper* body0,
   }
 
   double gap = std::numeric_limits<double>::infinity();  // the least of depth - breaking distance
+  const btVector3 side = pose.getBasis().getColumn(1);
   for (std::size_t i = 0; i < manifolds_.size(); ++i) {
-    const btVector3 center = wall_pose.invXform(axis * geometry.axial[i] + pose.getOrigin());
+    btVector3 in_world = axis * geometry.axial[i] + pose.getOrigin();
+    if (!geometry.straight) in_world += side * geometry.lateral[i];
+    const btVector3 center = wall_pose.invXform(in_world);
     btVector3 closest(std::clamp(center.x(), -core.x(), core.x()),
                       std::clamp(center.y(), -core.y(), core.y()),
                       std::clamp(center.z(), -core.z(), core.z()));

@@ -64,7 +64,7 @@ double largest_rod_reach(const Model& model) {
   double reach = 0.0;
   for (const Species& species : model.species) {
     for (const Sphere& sphere : species.shape.spheres) {
-      reach = std::max(reach, std::abs(sphere.axial) + sphere.radius);
+      reach = std::max(reach, std::hypot(sphere.axial, sphere.lateral) + sphere.radius);
     }
   }
   return reach;
@@ -125,12 +125,13 @@ struct Simulation::Impl {
   std::vector<double> kick_eps, white_noise_step;  ///< per rod
   std::vector<double> noise_angle, noise_rate;     ///< per rod, the white noise of this step
   std::vector<char> noise_turned;                  ///< per rod: the solver applied noise_rate
-  /// Per rod: BodyTag::travel, the pose it was last brought up to date at, and the distance of
-  /// the farthest sphere centre from the centre of mass [mm].
+  /// Per rod: BodyTag::travel, the pose it was last brought up to date at, and the farthest sphere
+  /// centre's distance from the centre of mass along the axis and across it [mm].
   std::vector<Travel> travel;
   std::vector<btTransform> travel_pose;
   std::vector<double> axial_reach;
-  double thinnest_radius = 0.0;                    ///< of any rod's spheres [mm]
+  std::vector<double> lateral_reach;
+  double thinnest_radius = 0.0;  ///< of any rod's spheres [mm]
   /// No contact shallower than this can be too deep: the thinnest radius and the thinnest
   /// sphere's, wall's or plate's reach [mm].
   double shallowest_limit = 0.0;
@@ -171,12 +172,13 @@ struct Simulation::Impl {
 
   void build_shapes() {
     for (const Species& species : model.species) {
-      auto compound = std::make_unique<btCompoundShape>(false, static_cast<int>(species.shape.spheres.size()));
+      auto compound =
+          std::make_unique<btCompoundShape>(false, static_cast<int>(species.shape.spheres.size()));
       for (const Sphere& sphere : species.shape.spheres) {
         auto& child = sphere_shapes.emplace_back(std::make_unique<btSphereShape>(sphere.radius));
         btTransform offset;
         offset.setIdentity();
-        offset.setOrigin(btVector3(sphere.axial, 0, 0));
+        offset.setOrigin(btVector3(sphere.axial, sphere.lateral, 0));
         compound->addChildShape(offset, child.get());
       }
       compound->setUserPointer(
@@ -184,9 +186,8 @@ struct Simulation::Impl {
       rod_shapes.push_back(std::move(compound));
     }
     const double overhang = 2.0 * largest_rod_reach(model) + kReachMargin;
-    plate_shape = std::make_unique<btBoxShape>(btVector3(model.box_x / 2 + overhang,
-                                                         model.box_y / 2 + overhang,
-                                                         PlateDrive::kPlateHalfThickness));
+    plate_shape = std::make_unique<btBoxShape>(btVector3(
+        model.box_x / 2 + overhang, model.box_y / 2 + overhang, PlateDrive::kPlateHalfThickness));
     // Walls reach through both plates at their extreme positions.
     const double wall_half_height = model.drive.gap + 2.0 * model.drive.amplitude + 1.0;
     for (const Wall& wall : model.walls) {
@@ -212,7 +213,9 @@ struct Simulation::Impl {
       const Species& species = model.species.at(static_cast<std::size_t>(init.species));
       RodState rod{};
       rod.position = {init.x, init.y, rest_height + species.shape.max_radius};
-      rod.basis = from_bullet(btMatrix3x3(btQuaternion(btVector3(0, 0, 1), init.heading)));
+      btQuaternion orientation(btVector3(0, 0, 1), init.heading);
+      if (init.roll != 0.0) orientation *= btQuaternion(btVector3(1, 0, 0), init.roll);
+      rod.basis = from_bullet(btMatrix3x3(orientation));
       rod.velocity = {0, 0, 0};
       rod.angular_velocity = {0, 0, 0};
       rod.image = {0, 0};
@@ -322,23 +325,26 @@ struct Simulation::Impl {
     travel.assign(rod_count, 0);  // never resized while the world stands: tags point into it
     travel_pose.clear();
     axial_reach.clear();
+    lateral_reach.clear();
     for (std::size_t i = 0; i < rod_count; ++i) {
       const RodState& rs = state.rods[i];
       const Species& species = model.species[static_cast<std::size_t>(model.rods[i].species)];
       rod_tags.push_back({BodyKind::kRod, species.material, &model.materials, static_cast<int>(i)});
       if (!model.test_every_pair) rod_tags.back().travel = &travel[i];
-      double reach = 0.0;
+      double reach = 0.0, lateral = 0.0;
       for (const Sphere& sphere : species.shape.spheres) {
         reach = std::max(reach, std::abs(sphere.axial));
+        lateral = std::max(lateral, std::abs(sphere.lateral));
       }
       axial_reach.push_back(reach);
+      lateral_reach.push_back(lateral);
       btCompoundShape* shape = rod_shapes[static_cast<std::size_t>(model.rods[i].species)].get();
       btRigidBody::btRigidBodyConstructionInfo info_rod(species.shape.mass, nullptr, shape);
       auto body = std::make_unique<btRigidBody>(info_rod);
       // Bullet's compound inertia is a bounding-box estimate; use the union's exact values.
       body->setMassProps(species.shape.mass,
                          btVector3(species.shape.inertia_axial, species.shape.inertia_transverse,
-                                   species.shape.inertia_transverse));
+                                   species.shape.inertia_normal));
       body->updateInertiaTensor();
       body->setActivationState(DISABLE_DEACTIVATION);
       body->setContactProcessingThreshold(0.0);
@@ -351,7 +357,8 @@ struct Simulation::Impl {
       body->setAngularVelocity(to_bullet(rs.angular_velocity));
       body->setInterpolationLinearVelocity(to_bullet(rs.velocity));
       body->setInterpolationAngularVelocity(to_bullet(rs.angular_velocity));
-      world->addRigidBody(body.get(), kGroupRod, kGroupRod | kGroupPlate | kGroupWall | kGroupImage);
+      world->addRigidBody(body.get(), kGroupRod,
+                          kGroupRod | kGroupPlate | kGroupWall | kGroupImage);
       body->updateInertiaTensor();
       rods.push_back(body.get());
       rod_bodies.push_back(std::move(body));
@@ -361,8 +368,8 @@ struct Simulation::Impl {
     image_tags.reserve(rod_count * PeriodicCell::kShiftCount);
     for (std::size_t i = 0; i < rod_count; ++i) {
       for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
-        image_tags.push_back({BodyKind::kImage, rod_tags[i].material, &model.materials,
-                              static_cast<int>(i), s});
+        image_tags.push_back(
+            {BodyKind::kImage, rod_tags[i].material, &model.materials, static_cast<int>(i), s});
         image_tags.back().travel = rod_tags[i].travel;
         auto image = std::make_unique<btCollisionObject>();
         image->setCollisionShape(rods[i]->getCollisionShape());
@@ -450,13 +457,18 @@ struct Simulation::Impl {
         image_count[i][0] += crossed[0];
         image_count[i][1] += crossed[1];
       }
-      // A sphere centre at a on the axis moves by the centre's move plus a times the axis's: the
-      // sum bounds every sphere's, and an image's (a wrap moves it with its rod).
+      // A sphere centre at (a, l) on the body's x and y axes moves by the centre's move plus a
+      // times the x axis's plus l times the y axis's: the sum bounds every sphere's, and an
+      // image's (a wrap moves it with its rod).
       const btTransform& last = travel_pose[i];
-      travel[i] += travel_of_move(
-          (transform.getOrigin() - last.getOrigin()).length() +
-          (transform.getBasis().getColumn(0) - last.getBasis().getColumn(0)).length() *
-              axial_reach[i]);
+      double move = (transform.getOrigin() - last.getOrigin()).length() +
+                    (transform.getBasis().getColumn(0) - last.getBasis().getColumn(0)).length() *
+                        axial_reach[i];
+      if (lateral_reach[i] > 0.0) {
+        move += (transform.getBasis().getColumn(1) - last.getBasis().getColumn(1)).length() *
+                lateral_reach[i];
+      }
+      travel[i] += travel_of_move(move);
       travel_pose[i] = transform;
       const bool near_edge = cell.near_edge(transform.getOrigin().x(), transform.getOrigin().y());
       for (int s = 0; s < PeriodicCell::kShiftCount; ++s) {
@@ -668,9 +680,10 @@ Frame Simulation::frame() const {
     RodFrame rod;
     rod.species = impl_->model.rods[i].species;
     rod.position = {transform.getOrigin().x(), transform.getOrigin().y()};
-    rod.unwrapped = rod.position +
-                    Eigen::Vector2d(static_cast<double>(impl_->image_count[i][0]) * impl_->model.box_x,
-                                    static_cast<double>(impl_->image_count[i][1]) * impl_->model.box_y);
+    rod.unwrapped =
+        rod.position +
+        Eigen::Vector2d(static_cast<double>(impl_->image_count[i][0]) * impl_->model.box_x,
+                        static_cast<double>(impl_->image_count[i][1]) * impl_->model.box_y);
     rod.z = transform.getOrigin().z();
     rod.axis = {axis.x(), axis.y(), axis.z()};
     const btVector3& v = body.getLinearVelocity();

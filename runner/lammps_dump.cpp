@@ -51,6 +51,7 @@ std::string LammpsDumpFormatter::format(const engine::Frame& frame, std::int64_t
   for (std::size_t rod = 0; rod < frame.rods.size(); ++rod) {
     const engine::RodFrame& r = frame.rods[rod];
     const auto& spheres = species_spheres_[static_cast<std::size_t>(r.species)];
+    // A frame has the axis but not the roll about it: off-axis spheres are written on the axis.
     for (const engine::Sphere& sphere : spheres) {
       const double x = r.position.x() + sphere.axial * r.axis.x();
       const double y = r.position.y() + sphere.axial * r.axis.y();

@@ -31,14 +31,18 @@ constexpr double kVelocityBin = 0.5;
 
 std::string number(double value) { return scenarios::format_real(value); }
 
+/// The golden ratio's fractional part: the rolls of successive rods, as fractions of a turn, spread
+/// evenly whatever their number.
+constexpr double kGoldenFraction = 0.6180339887498949;
+
 /// The model of one free rod of species `species`, alone in a periodic cell.
 engine::Model single_rod_model(const engine::Model& scenario_model, int species, double cell,
-                               double heading, std::uint64_t seed) {
+                               double heading, double roll, std::uint64_t seed) {
   engine::Model model = scenario_model;
   model.box_x = model.box_y = cell;
   model.walls.clear();
   model.species = {scenario_model.species[static_cast<std::size_t>(species)]};
-  model.rods = {{0, 0.5 * cell, 0.5 * cell, heading}};
+  model.rods = {{0, 0.5 * cell, 0.5 * cell, heading, roll}};
   model.seed = seed;
   return model;
 }
@@ -122,6 +126,8 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   const double period = 1.0 / model.drive.frequency;
   const std::int64_t samples = std::llround(request.duration / request.sample_interval);
   const std::string& species_name = model.species[static_cast<std::size_t>(species)].name;
+  const bool straight =
+      engine::is_straight(model.species[static_cast<std::size_t>(species)].shape.spheres);
 
   std::vector<RodResult> rods;
   const double cpu_start = process_cpu_seconds();
@@ -138,7 +144,11 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   };
   for (int rod = 0; rod < request.rods; ++rod) {
     const double heading = 2.0 * std::numbers::pi * rod / request.rods;
-    engine::Simulation simulation(single_rod_model(model, species, request.cell, heading,
+    // A rod that is not straight starts with its off-axis part turned about the axis by another
+    // fraction of the circle for each rod, in an order unrelated to the heading's.
+    const double roll =
+        straight ? 0.0 : 2.0 * std::numbers::pi * std::fmod(rod * kGoldenFraction, 1.0);
+    engine::Simulation simulation(single_rod_model(model, species, request.cell, heading, roll,
                                                    model.seed + static_cast<std::uint64_t>(rod)));
     const double warmup = request.warmup + period * rod / request.rods;
     simulation.advance(std::llround(warmup / model.dt));

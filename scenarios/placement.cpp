@@ -29,7 +29,11 @@ Capsule capsule_of(const engine::RodShape& shape, const Eigen::Vector2d& center,
   if (back > front) back = front = 0.5 * (back + front);  // a rod hardly longer than thick
   const Eigen::Vector2d a = back * axis;
   const Eigen::Vector2d b = front * axis;
-  return {center, a, b, radius, std::max(a.norm(), b.norm()) + radius};
+  // Off-axis spheres are the straight rod's moved by at most their largest offset.
+  double lateral = 0.0;
+  for (const engine::Sphere& sphere : shape.spheres)
+    lateral = std::max(lateral, std::abs(sphere.lateral));
+  return {center, a, b, radius + lateral, std::max(a.norm(), b.norm()) + radius + lateral};
 }
 
 /// Nearest image of a displacement in the periodic cell.
@@ -52,8 +56,7 @@ bool capsules_overlap(const Capsule& p, const Capsule& q, double box_x, double b
 /// answer as testing every capsule, in time independent of how many are placed.
 class PlacedCapsules {
  public:
-  PlacedCapsules(double box_x, double box_y, double largest_reach)
-      : box_x_(box_x), box_y_(box_y) {
+  PlacedCapsules(double box_x, double box_y, double largest_reach) : box_x_(box_x), box_y_(box_y) {
     const double cell = 2.0 * largest_reach + kPlacementClearance;
     nx_ = std::max(1, static_cast<int>(std::floor(box_x / cell)));
     ny_ = std::max(1, static_cast<int>(std::floor(box_y / cell)));
@@ -211,6 +214,9 @@ PlacementResult place_rods(const PlacementCell& cell, const std::vector<SpeciesP
           heading = s.heading.angle;
           break;
       }
+      // A rod that is not straight lands with its off-axis part facing any way about its axis; a
+      // straight one draws nothing, so that its placements stay as they were.
+      const double roll = engine::is_straight(s.shape.spheres) ? 0.0 : uniform_in(-kPi, kPi);
       const Capsule capsule = capsule_of(s.shape, center, heading);
       const bool free =
           std::none_of(cell.walls.begin(), cell.walls.end(),
@@ -220,7 +226,7 @@ PlacementResult place_rods(const PlacementCell& cell, const std::vector<SpeciesP
           !placed.overlaps(capsule);
       if (free) {
         placed.add(capsule);
-        result.rods.push_back({s.species, center.x(), center.y(), heading});
+        result.rods.push_back({s.species, center.x(), center.y(), heading, roll});
         ++placed_count[static_cast<std::size_t>(index)];
         done = true;
       }

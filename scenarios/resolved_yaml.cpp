@@ -72,6 +72,7 @@ void write_shape(Writer& w, const ShapeSpec& shape) {
         w.key("thick_radius").number(shape.thick_radius.value);
         w.key("thin_radius").number(shape.thin_radius.value);
         w.key("step").number(shape.step.value);
+        if (shape.thin_offset.value != 0.0) w.key("thin_offset").number(shape.thin_offset.value);
       }
       break;
     case ShapeSpec::Kind::taper:
@@ -161,6 +162,11 @@ void write_derived(Writer& w, const Scenario& scenario) {
     w.key("mass").number(derived.mass);
     w.key("length").number(derived.length);
     w.key("thickness").number(2.0 * model.species[i].shape.max_radius);
+    // A rod that is not straight: the angle between its principal axis, which the rod's heading
+    // and outputs follow, and the thick part's axis [rad].
+    if (model.species[i].shape.axis_lean != 0.0) {
+      w.key("axis_lean").number(model.species[i].shape.axis_lean);
+    }
     w.end_map();
   }
   w.end_list();

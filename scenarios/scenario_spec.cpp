@@ -28,6 +28,7 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
   out.thick_radius = shape.real("thick_radius");
   out.thin_radius = shape.real("thin_radius");
   out.step = shape.real("step");
+  out.thin_offset = shape.real("thin_offset");
   if (has_taper) {
     out.kind = ShapeSpec::Kind::taper;
     SectionReader taper = shape.section("taper");
@@ -54,6 +55,10 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
   }
   if (shape.has("step") && !rnt) {
     diagnostics.error(shape.location_of("step"), shape.path_of("step"),
+                      "applies to `preset: RnT` only");
+  }
+  if (shape.has("thin_offset") && !rnt) {
+    diagnostics.error(shape.location_of("thin_offset"), shape.path_of("thin_offset"),
                       "applies to `preset: RnT` only");
   }
   return out;

@@ -25,6 +25,7 @@ struct ShapeSpec {
   Sourced<double> thick_radius;        ///< RnT's thick part [mm]
   Sourced<double> thin_radius;         ///< RnT's thin part [mm]
   Sourced<double> step;                ///< RnT's step, from the thick tip [mm]
+  Sourced<double> thin_offset;         ///< RnT's thin axis from the thick one's [mm]
   Sourced<double> taper_length;        ///< tip to tip [mm]
   Sourced<double> taper_thick_radius;  ///< [mm]
   Sourced<double> taper_thin_radius;   ///< [mm]

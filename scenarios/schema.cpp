@@ -118,6 +118,11 @@ std::vector<KeyInfo> scenario_keys() {
        "to 3.5 - thin_radius: one whole sphere on each side. Moved back from mid-length (to 3 mm), or "
        "with other radii, RnT's gait may change with run.dt, and validate warns above "
        "run.dt = 1.25e-5 s (docs/model.md, \"Where the RnT's step lies\")."},
+      {"species[].shape.thin_offset", V::real, "mm", "0", non_negative(), {},
+       "How far the RnT preset's thin part lies off the thick part's axis, parallel to it (RnT "
+       "only): 0, the paper's straight rod, by default. At most thick_radius - thin_radius, so "
+       "that the rod stays thick_radius wide. An offset breaks the rod's mirror symmetry about "
+       "its axis (docs/model.md, \"An RnT whose thin part is off its axis\")."},
       {"species[].shape.taper", V::section, "", "", {}, {},
        "A linear taper: spheres with radii linear from the thick to the thin end."},
       {"species[].shape.taper.length", V::real, "mm", "", positive(), {},

@@ -2,7 +2,9 @@
 // they replace: for thousands of random poses of two rods, a rod and a plate, a rod and a slanted
 // wall, both dispatchers compute the contacts of the pair, and every penetrating point of one must
 // be a point of the other (position, normal, depth). Speculative points (not yet touching) are
-// left out: the solver never uses them, and the generic path keeps them by other rules.
+// left out: the solver never uses them, and the generic path keeps them by other rules. Each runs
+// with rod A and with an RnT whose thin part lies off its axis (far more than a real one's would,
+// so that a wrong offset cannot hide in the tolerance).
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -60,7 +62,8 @@ struct Dispatch {
         if (point.getDistance() > 0.0) continue;
         // The normal points from body 1 toward body 0; turn it to point from b toward a.
         const btVector3 normal = a_is_body0 ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
-        const btVector3 on_b = a_is_body0 ? point.getPositionWorldOnB() : point.getPositionWorldOnA();
+        const btVector3 on_b =
+            a_is_body0 ? point.getPositionWorldOnB() : point.getPositionWorldOnA();
         points.push_back({on_b, normal, point.getDistance()});
       }
     }
@@ -70,14 +73,20 @@ struct Dispatch {
   }
 };
 
-/// Rod A as a simulation builds it: a compound of spheres with its RodGeometry attached.
+/// An RnT whose thin part lies 0.2 mm off the thick part's axis.
+RodProfile off_axis_rnt() {
+  return preset_rnt_profile(kRntThinRadius, kRntLength / 2, kRntThickRadius, 0.2);
+}
+
+/// A rod as a simulation builds it: a compound of spheres with its RodGeometry attached.
 struct Rod {
-  Rod() : shape(make_rod_shape(preset_a_profile(), rodsort::kBrassDensity)), geometry(shape) {
+  explicit Rod(const RodProfile& profile)
+      : shape(make_rod_shape(profile, rodsort::kBrassDensity)), geometry(shape) {
     for (const Sphere& sphere : shape.spheres) {
       spheres.push_back(std::make_unique<btSphereShape>(sphere.radius));
       btTransform offset;
       offset.setIdentity();
-      offset.setOrigin(btVector3(sphere.axial, 0, 0));
+      offset.setOrigin(btVector3(sphere.axial, sphere.lateral, 0));
       compound.addChildShape(offset, spheres.back().get());
     }
     compound.setUserPointer(&geometry);
@@ -119,12 +128,15 @@ btTransform random_rod_pose(std::mt19937_64& random, const btVector3& around, do
 TEST_CASE("rod-rod contacts are those of Bullet's compound algorithms", "[engine][collision]") {
   install_material_table_callbacks();
   MaterialTable materials = MaterialTable::paper();
-  Rod rod;
+  // Two A rods, two off-axis RnT rods, one of each.
+  const int pair = GENERATE(0, 1, 2);
+  Rod rod_a(pair == 1 ? off_axis_rnt() : preset_a_profile());
+  Rod rod_b(pair == 0 ? preset_a_profile() : off_axis_rnt());
   BodyTag tag_a{BodyKind::kRod, MaterialTable::kFirstRod, &materials, 0};
   BodyTag tag_b{BodyKind::kRod, MaterialTable::kFirstRod, &materials, 1};
   btCollisionObject a, b;
-  a.setCollisionShape(&rod.compound);
-  b.setCollisionShape(&rod.compound);
+  a.setCollisionShape(&rod_a.compound);
+  b.setCollisionShape(&rod_b.compound);
   attach_tag(a, tag_a);
   attach_tag(b, tag_b);
   Dispatch generic(false), ours(true);
@@ -135,7 +147,7 @@ TEST_CASE("rod-rod contacts are those of Bullet's compound algorithms", "[engine
     b.setWorldTransform(random_rod_pose(random, btVector3(0, 0, 0), 3.0));
     const std::vector<Point> expected = generic.contacts(a, b);
     touching += !expected.empty();
-    INFO("pose " << pose);
+    INFO("rods " << pair << ", pose " << pose);
     check_same(expected, ours.contacts(a, b), 1e-12);
   }
   CHECK(touching > 500);  // the poses test contacts, not only misses
@@ -144,7 +156,8 @@ TEST_CASE("rod-rod contacts are those of Bullet's compound algorithms", "[engine
 TEST_CASE("rod-plate contacts are those of Bullet's compound algorithms", "[engine][collision]") {
   install_material_table_callbacks();
   MaterialTable materials = MaterialTable::paper();
-  Rod rod;
+  const bool off_axis = GENERATE(false, true);
+  Rod rod(off_axis ? off_axis_rnt() : preset_a_profile());
   btBoxShape plate_shape(btVector3(20, 20, 1));
   BodyTag rod_tag{BodyKind::kRod, MaterialTable::kFirstRod, &materials, 0};
   Dispatch generic(false), ours(true);
@@ -168,7 +181,7 @@ TEST_CASE("rod-plate contacts are those of Bullet's compound algorithms", "[engi
       btTransform pose_now = random_rod_pose(random, btVector3(0, 0, 0), 0.5);
       double gap = 1e9;
       for (const Sphere& sphere : rod.shape.spheres) {
-        const double z = (pose_now * btVector3(sphere.axial, 0, 0)).z();
+        const double z = (pose_now * btVector3(sphere.axial, sphere.lateral, 0)).z();
         gap = std::min(gap, side * z - sphere.radius);
       }
       const double wanted = 0.05 * (1.0 + 2.0 * unit(random)) - 0.05;
@@ -176,7 +189,8 @@ TEST_CASE("rod-plate contacts are those of Bullet's compound algorithms", "[engi
       rod_object.setWorldTransform(pose_now);
       const std::vector<Point> expected = generic.contacts(rod_object, plate);
       touching += !expected.empty();
-      INFO("pose " << pose << (kind == BodyKind::kBase ? " on the base" : " under the lid"));
+      INFO((off_axis ? "off-axis RnT" : "rod A")
+           << ", pose " << pose << (kind == BodyKind::kBase ? " on the base" : " under the lid"));
       check_same(expected, ours.contacts(rod_object, plate), 1e-12);
     }
     CHECK(touching > 500);
@@ -186,7 +200,8 @@ TEST_CASE("rod-plate contacts are those of Bullet's compound algorithms", "[engi
 TEST_CASE("rod-wall contacts are those Bullet's GJK finds", "[engine][collision]") {
   install_material_table_callbacks();
   MaterialTable materials = MaterialTable::paper();
-  Rod rod;
+  const bool off_axis = GENERATE(false, true);
+  Rod rod(off_axis ? off_axis_rnt() : preset_a_profile());
   btBoxShape wall_shape(btVector3(10, 0.3, 3));
   BodyTag rod_tag{BodyKind::kRod, MaterialTable::kFirstRod, &materials, 0};
   BodyTag wall_tag{BodyKind::kWall, MaterialTable::kWall, &materials};
@@ -210,7 +225,7 @@ TEST_CASE("rod-wall contacts are those Bullet's GJK finds", "[engine][collision]
     rod_object.setWorldTransform(random_rod_pose(random, near, 0.3));
     const std::vector<Point> expected = generic.contacts(rod_object, wall);
     touching += !expected.empty();
-    INFO("pose " << pose);
+    INFO((off_axis ? "off-axis RnT" : "rod A") << ", pose " << pose);
     // GJK and EPA converge to a tolerance; the closed form here is exact.
     check_same(expected, ours.contacts(rod_object, wall), 1e-6);
   }

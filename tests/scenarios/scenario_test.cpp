@@ -523,3 +523,22 @@ TEST_CASE("output.rods_format chooses rods.csv, rods.h5 or both", "[scenario][ou
   REQUIRE(reread.ok());
   CHECK(reread.diagnostics.empty());
 }
+
+TEST_CASE("an RnT whose thin part lies off its axis is warned about at a large dt", "[scenario]") {
+  const auto rnt = [](const std::string& shape, const std::string& run) {
+    return "species: [{name: R, shape: {preset: RnT" + shape +
+           "}, count: 10, noise: {kick_eps: 0}}]\n" + run;
+  };
+  const LoadResult coarse = load_scenario_text(rnt(", thin_offset: 0.05", ""), "o.yaml");
+  REQUIRE(coarse.ok());
+  REQUIRE(coarse.diagnostics.size() == 1);
+  CHECK(coarse.diagnostics[0].severity == Severity::warning);
+  CHECK_THAT(coarse.diagnostics[0].to_string(),
+             Catch::Contains("o.yaml:1:55: warning: species[0].shape.thin_offset: an RnT whose "
+                             "thin part lies off its axis may change its gait with run.dt = "
+                             "1e-4 s"));
+  // At the smallest step studied, or with the thin part on the axis, nothing is said.
+  CHECK(load_scenario_text(rnt(", thin_offset: 0.05", "run: {dt: 1.25e-5}\n"), "o.yaml")
+            .diagnostics.empty());
+  CHECK(load_scenario_text(rnt(", thin_offset: 0", ""), "o.yaml").diagnostics.empty());
+}
