@@ -171,51 +171,69 @@ struct Moments {
 /// half as many over z >= 0 (the union is mirror symmetric in z).
 constexpr int kLinesAcross = 800;
 
-Moments off_axis_moments(const std::vector<Sphere>& spheres) {
+/// The union's extent across the axis: y from y_low to y_high, |z| up to z_high [mm].
+struct Extent {
   double y_low = std::numeric_limits<double>::infinity();
-  double y_high = -y_low;
+  double y_high = -std::numeric_limits<double>::infinity();
   double z_high = 0.0;
+};
+
+Extent extent_across(const std::vector<Sphere>& spheres) {
+  Extent extent;
   for (const Sphere& sphere : spheres) {
-    y_low = std::min(y_low, sphere.lateral - sphere.radius);
-    y_high = std::max(y_high, sphere.lateral + sphere.radius);
-    z_high = std::max(z_high, sphere.radius);
+    extent.y_low = std::min(extent.y_low, sphere.lateral - sphere.radius);
+    extent.y_high = std::max(extent.y_high, sphere.lateral + sphere.radius);
+    extent.z_high = std::max(extent.z_high, sphere.radius);
   }
+  return extent;
+}
+
+/// Calls visit(begin, end) for each interval in which the line parallel to the axis through
+/// (y, z) crosses the union, the overlapping chords of its spheres merged. `chords` is scratch.
+template <typename Visit>
+void for_each_crossing(const std::vector<Sphere>& spheres, double y, double z,
+                       std::vector<std::pair<double, double>>& chords, Visit visit) {
+  chords.clear();
+  for (const Sphere& sphere : spheres) {
+    const double across = (y - sphere.lateral) * (y - sphere.lateral) + z * z;
+    const double half2 = sphere.radius * sphere.radius - across;
+    if (half2 <= 0.0) continue;
+    const double half = std::sqrt(half2);
+    chords.emplace_back(sphere.axial - half, sphere.axial + half);
+  }
+  if (chords.empty()) return;
+  std::sort(chords.begin(), chords.end());
+  double begin = chords.front().first, end = chords.front().second;
+  for (const auto& [b, e] : chords) {
+    if (b > end) {
+      visit(begin, end);
+      begin = b;
+    }
+    end = std::max(end, e);
+  }
+  visit(begin, end);
+}
+
+Moments off_axis_moments(const std::vector<Sphere>& spheres) {
+  const Extent extent = extent_across(spheres);
   const int y_cells = kLinesAcross;
   const int z_cells = kLinesAcross / 2;
-  const double dy = (y_high - y_low) / y_cells;
-  const double dz = z_high / z_cells;
+  const double dy = (extent.y_high - extent.y_low) / y_cells;
+  const double dz = extent.z_high / z_cells;
   const double weight = 2.0 * dy * dz;  // each z > 0 cell stands for its mirror image too
   std::vector<std::pair<double, double>> chords;
   Moments sum;
   for (int iy = 0; iy < y_cells; ++iy) {
-    const double y = y_low + (iy + 0.5) * dy;
+    const double y = extent.y_low + (iy + 0.5) * dy;
     for (int iz = 0; iz < z_cells; ++iz) {
       const double z = (iz + 0.5) * dz;
-      chords.clear();
-      for (const Sphere& sphere : spheres) {
-        const double across = (y - sphere.lateral) * (y - sphere.lateral) + z * z;
-        const double half2 = sphere.radius * sphere.radius - across;
-        if (half2 <= 0.0) continue;
-        const double half = std::sqrt(half2);
-        chords.emplace_back(sphere.axial - half, sphere.axial + half);
-      }
-      if (chords.empty()) continue;
-      std::sort(chords.begin(), chords.end());
+      // The integrals of 1, x and x^2 along the line.
       double length = 0.0, first = 0.0, second = 0.0;
-      const auto add = [&](double begin, double end) {
+      for_each_crossing(spheres, y, z, chords, [&](double begin, double end) {
         length += end - begin;
         first += 0.5 * (end - begin) * (end + begin);
         second += (end * end * end - begin * begin * begin) / 3.0;
-      };
-      double begin = chords.front().first, end = chords.front().second;
-      for (const auto& [b, e] : chords) {
-        if (b > end) {
-          add(begin, end);
-          begin = b;
-        }
-        end = std::max(end, e);
-      }
-      add(begin, end);
+      });
       sum.volume += weight * length;
       sum.x += weight * first;
       sum.y += weight * y * length;
@@ -228,41 +246,18 @@ Moments off_axis_moments(const std::vector<Sphere>& spheres) {
   return sum;
 }
 
-/// Area of the union's outline in the x-y plane (the discs of the spheres' great circles there),
-/// over lines parallel to the axis on a fine midpoint grid in y.
+/// Area of the union's outline in the x-y plane (the discs of the spheres' great circles there):
+/// the lengths of the lines at z = 0, on a fine midpoint grid in y.
 double off_axis_projected_area(const std::vector<Sphere>& spheres) {
   constexpr int kLines = 20000;
-  double y_low = std::numeric_limits<double>::infinity();
-  double y_high = -y_low;
-  for (const Sphere& sphere : spheres) {
-    y_low = std::min(y_low, sphere.lateral - sphere.radius);
-    y_high = std::max(y_high, sphere.lateral + sphere.radius);
-  }
-  const double dy = (y_high - y_low) / kLines;
+  const Extent extent = extent_across(spheres);
+  const double dy = (extent.y_high - extent.y_low) / kLines;
   std::vector<std::pair<double, double>> chords;
   double area = 0.0;
   for (int iy = 0; iy < kLines; ++iy) {
-    const double y = y_low + (iy + 0.5) * dy;
-    chords.clear();
-    for (const Sphere& sphere : spheres) {
-      const double half2 =
-          sphere.radius * sphere.radius - (y - sphere.lateral) * (y - sphere.lateral);
-      if (half2 > 0.0) {
-        const double half = std::sqrt(half2);
-        chords.emplace_back(sphere.axial - half, sphere.axial + half);
-      }
-    }
-    if (chords.empty()) continue;
-    std::sort(chords.begin(), chords.end());
-    double begin = chords.front().first, end = chords.front().second;
-    for (const auto& [b, e] : chords) {
-      if (b > end) {
-        area += dy * (end - begin);
-        begin = b;
-      }
-      end = std::max(end, e);
-    }
-    area += dy * (end - begin);
+    const double y = extent.y_low + (iy + 0.5) * dy;
+    for_each_crossing(spheres, y, 0.0, chords,
+                      [&](double begin, double end) { area += dy * (end - begin); });
   }
   return area;
 }
