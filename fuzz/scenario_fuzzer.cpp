@@ -50,6 +50,8 @@ void check_model(const scenarios::Scenario& scenario) {
   for (const engine::Species& species : model.species) {
     check_finite(species.shape.mass, "a species' mass");
     check_finite(species.shape.inertia_transverse, "a species' inertia");
+    check_finite(species.shape.inertia_normal, "a species' inertia");
+    check_finite(species.shape.axis_lean, "a species' axis lean");
     check_finite(species.noise.kick_eps, "kick_eps");
     check_finite(species.noise.white_Dr, "white_Dr");
   }
@@ -57,6 +59,7 @@ void check_model(const scenarios::Scenario& scenario) {
     check_finite(rod.x, "a rod's x");
     check_finite(rod.y, "a rod's y");
     check_finite(rod.heading, "a rod's heading");
+    check_finite(rod.roll, "a rod's roll");
   }
   if (scenario.run.steps < 1) absurd("a run of fewer than one step");
 }

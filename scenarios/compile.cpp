@@ -68,7 +68,22 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
                                 mm(offset));
           return std::nullopt;
         }
-        return engine::preset_rnt_profile(thin, step, thick, offset);
+        engine::RodProfile profile = engine::preset_rnt_profile(thin, step, thick, offset);
+        // As many spheres as an explicit list or a taper may have: a very thin part would take
+        // thousands, and the mass properties of a union cost the square of its spheres' count.
+        constexpr std::size_t kMaxSpheres = 200;
+        if (profile.spheres.size() > kMaxSpheres) {
+          const Sourced<double>& key = thin < thick ? shape.thin_radius : shape.thick_radius;
+          diagnostics.error(key.where, key.path,
+                            "gives an RnT of " + std::to_string(profile.spheres.size()) +
+                                " spheres (neighbours at most 0.872 radii apart), more than " +
+                                std::to_string(kMaxSpheres) +
+                                "; expected a larger radius (the preset's thin part is 0.3 mm, "
+                                "its thick part 0.55 mm), got " +
+                                mm(key.value));
+          return std::nullopt;
+        }
+        return profile;
       }
       return engine::preset_a_profile();
     case ShapeSpec::Kind::taper: {
