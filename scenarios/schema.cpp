@@ -111,7 +111,8 @@ std::vector<KeyInfo> scenario_keys() {
        "Radius of the thick part of the RnT preset (RnT only): the paper's 1.1 mm thick. With the "
        "lid it sets RnT's clearance (docs/model.md, \"The clearance to the lid\")."},
       {"species[].shape.thin_radius", V::real, "mm", "0.3", positive(), {},
-       "Radius of the thin part of the RnT preset (RnT only), at most thick_radius."},
+       "Radius of the thin part of the RnT preset (RnT only), at most thick_radius; the preset's "
+       "spheres, at most 0.872 radii apart, may number 200 at most."},
       {"species[].shape.step", V::real, "mm", "1.75", positive(), {},
        "Where the RnT preset's single step lies, from its thick tip (RnT only; the paper gives no "
        "figure, mid-length by default). From thick_radius + sqrt(thick_radius^2 - thin_radius^2) "
