@@ -16,11 +16,11 @@ RodGeometry::RodGeometry(const RodShape& shape) {
     axial.push_back(sphere.axial);
     radius.push_back(sphere.radius);
     lateral.push_back(sphere.lateral);
-    max_lateral = std::max(max_lateral, std::abs(sphere.lateral));
     max_radius = std::max(max_radius, sphere.radius);
     axial_min = std::min(axial_min, sphere.axial);
     axial_max = std::max(axial_max, sphere.axial);
   }
+  max_lateral = shape.max_lateral;
   straight = max_lateral == 0.0;
   ascending = std::is_sorted(axial.begin(), axial.end());
   if (axial_max > axial_min) {

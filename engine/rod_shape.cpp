@@ -404,6 +404,7 @@ RodShape make_rod_shape(const RodProfile& profile, double density) {
   shape.thick_tip = std::numeric_limits<double>::infinity();
   shape.thin_tip = -std::numeric_limits<double>::infinity();
   shape.max_radius = 0.0;
+  shape.max_lateral = 0.0;
   for (const Sphere& sphere : profile.spheres) {
     Sphere centred{sphere.axial - center_x, sphere.radius};
     if (!straight) {
@@ -415,6 +416,7 @@ RodShape make_rod_shape(const RodProfile& profile, double density) {
     shape.thick_tip = std::min(shape.thick_tip, centred.axial - centred.radius);
     shape.thin_tip = std::max(shape.thin_tip, centred.axial + centred.radius);
     shape.max_radius = std::max(shape.max_radius, centred.radius);
+    shape.max_lateral = std::max(shape.max_lateral, std::abs(centred.lateral));
   }
   shape.length = shape.thin_tip - shape.thick_tip;
   return shape;

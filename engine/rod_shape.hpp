@@ -62,11 +62,12 @@ struct RodShape {
   double
       inertia_normal;  ///< about the body z axis, = inertia_transverse for a straight rod [g mm^2]
   double axis_lean;    ///< angle from the profile's axis to the body x axis [rad]
-  double projected_area;  ///< area of the union's outline in the body x-y plane [mm^2]
-  double length;          ///< tip to tip [mm]
-  double max_radius;      ///< largest sphere radius [mm]
-  double thick_tip;       ///< axial position of the thick tip, from the centre of mass [mm] (<0)
-  double thin_tip;        ///< axial position of the thin tip, from the centre of mass [mm] (>0)
+  double projected_area;     ///< area of the union's outline in the body x-y plane [mm^2]
+  double length;             ///< tip to tip [mm]
+  double max_radius;         ///< largest sphere radius [mm]
+  double max_lateral = 0.0;  ///< largest |lateral| of a sphere, 0 for a straight rod [mm]
+  double thick_tip;          ///< axial position of the thick tip, from the centre of mass [mm] (<0)
+  double thin_tip;           ///< axial position of the thin tip, from the centre of mass [mm] (>0)
 };
 
 /// Computes the union's mass properties and recentres the profile on its centre of mass, turned

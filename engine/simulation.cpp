@@ -331,13 +331,12 @@ struct Simulation::Impl {
       const Species& species = model.species[static_cast<std::size_t>(model.rods[i].species)];
       rod_tags.push_back({BodyKind::kRod, species.material, &model.materials, static_cast<int>(i)});
       if (!model.test_every_pair) rod_tags.back().travel = &travel[i];
-      double reach = 0.0, lateral = 0.0;
+      double reach = 0.0;
       for (const Sphere& sphere : species.shape.spheres) {
         reach = std::max(reach, std::abs(sphere.axial));
-        lateral = std::max(lateral, std::abs(sphere.lateral));
       }
       axial_reach.push_back(reach);
-      lateral_reach.push_back(lateral);
+      lateral_reach.push_back(species.shape.max_lateral);
       btCompoundShape* shape = rod_shapes[static_cast<std::size_t>(model.rods[i].species)].get();
       btRigidBody::btRigidBodyConstructionInfo info_rod(species.shape.mass, nullptr, shape);
       auto body = std::make_unique<btRigidBody>(info_rod);

@@ -30,10 +30,8 @@ Capsule capsule_of(const engine::RodShape& shape, const Eigen::Vector2d& center,
   const Eigen::Vector2d a = back * axis;
   const Eigen::Vector2d b = front * axis;
   // Off-axis spheres are the straight rod's moved by at most their largest offset.
-  double lateral = 0.0;
-  for (const engine::Sphere& sphere : shape.spheres)
-    lateral = std::max(lateral, std::abs(sphere.lateral));
-  return {center, a, b, radius + lateral, std::max(a.norm(), b.norm()) + radius + lateral};
+  return {center, a, b, radius + shape.max_lateral,
+          std::max(a.norm(), b.norm()) + radius + shape.max_lateral};
 }
 
 /// Nearest image of a displacement in the periodic cell.
