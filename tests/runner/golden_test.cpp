@@ -118,13 +118,12 @@ TEST_CASE("golden: at a 1.31 mm gap the trap holds mostly A from a mixture of Rn
   const double mean = reference["gap_1.31"]["purity_held_A"]["mean"].as<double>();
   const double sd = reference["gap_1.31"]["purity_held_A"]["sd"].as<double>();
   TempDirectory directory;
-  // The mean of seeds 1 and 2 against the reference mean, within three standard errors of a
-  // two-seed mean, and never closer than 0.05.
-  const double tolerance = std::max(0.05, 3.0 * sd / std::sqrt(2.0));
-  const double measured =
-      0.5 * (late_purity_held_a(directory, 1) + late_purity_held_a(directory, 2));
-  INFO("seeds 1 and 2: A's share of the held rods " << measured << ", reference " << mean << " +- "
-                                                    << tolerance);
+  // Seed 1 against the reference mean, within three standard deviations of one seed, and never
+  // closer than 0.05 (one 150 s run; a second seed doubled the suite's longest test).
+  const double tolerance = std::max(0.05, 3.0 * sd);
+  const double measured = late_purity_held_a(directory, 1);
+  INFO("seed 1: A's share of the held rods " << measured << ", reference " << mean << " +- "
+                                            << tolerance);
   CHECK(std::abs(measured - mean) <= tolerance);
   // And the physics the test is for: from a mixture of 40% A the pile is mostly A, where at the
   // paper's gap it is not.
