@@ -26,6 +26,30 @@ Track track_of(const std::vector<engine::Frame>& frames, int rod) {
   return track;
 }
 
+double roll_angle(const std::array<double, 9>& basis) {
+  const Eigen::Vector3d axis(basis[0], basis[3], basis[6]);
+  const Eigen::Vector3d body_y(basis[1], basis[4], basis[7]);
+  // Left of the axis in the horizontal plane, and the direction normal to the axis nearest the
+  // vertical; for an upright rod (no left) the body x-z plane stands in.
+  Eigen::Vector3d left = Eigen::Vector3d::UnitZ().cross(axis);
+  if (left.norm() < 1e-12) left = Eigen::Vector3d(basis[1], basis[4], 0.0);
+  left.normalize();
+  const Eigen::Vector3d up = axis.cross(left);
+  return std::atan2(body_y.dot(up), body_y.dot(left));
+}
+
+Track roll_track(const Track& track, const std::vector<double>& roll) {
+  assert(roll.size() == track.time.size());
+  Track rolled = track;
+  rolled.heading.clear();
+  for (const double angle : roll) {
+    rolled.heading.push_back(
+        rolled.heading.empty() ? angle
+                               : rolled.heading.back() + wrap_angle(angle - rolled.heading.back()));
+  }
+  return rolled;
+}
+
 double thin_end_down_fraction(const std::vector<Track>& tracks) {
   long down = 0, samples = 0;
   for (const Track& track : tracks) {

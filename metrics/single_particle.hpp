@@ -6,6 +6,7 @@
 // periodic edges and headings across +-pi, so every lag sees the real motion.
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "engine/frame.hpp"
@@ -22,6 +23,18 @@ struct Track {
 /// Rod `rod` of every frame as a track. Frames must be close enough that the rod turns by less
 /// than half a turn between two of them.
 Track track_of(const std::vector<engine::Frame>& frames, int rod);
+
+/// A rod's roll about its own axis [rad], in (-pi, pi]: the angle of its body y axis from the
+/// horizontal direction to the left of its axis, counter-clockwise seen from the thin end, so that
+/// pi / 2 has body y pointing up. `basis` is the rotation matrix, row-major, whose first column is
+/// the rod's axis (engine::RodState::basis). For a rod whose spheres lie off its axis, body y
+/// points to their side (engine/rod_shape.hpp): the roll says where the off-axis part lies.
+double roll_angle(const std::array<double, 9>& basis);
+
+/// A track of the roll instead of the heading: `track` with its heading replaced by `roll`, one
+/// angle per sample, unwrapped across +-pi, so that D_r, turn_rate and without_steady_turn read the
+/// rod's turning about its own axis.
+Track roll_track(const Track& track, const std::vector<double>& roll);
 
 /// The fraction of all samples of the tracks in which the thin end is lower than the thick one
 /// (tilt < 0): the tilt of the gait that moves a tapered rod toward its thin end. NaN for no

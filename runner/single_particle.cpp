@@ -72,9 +72,75 @@ struct RodResult {
   metrics::Track track;
   std::vector<double> velocities;    ///< overlapping windows, one per sample
   std::vector<double> back_to_back;  ///< windows back to back
+  metrics::Track roll;               ///< the track with its roll for heading; off-axis shapes only
   std::int64_t kicks = 0;
 };
 
+/// An off-axis shape's roll over the rods: per rod its steady rate, the diffusion about it and its
+/// circular mean; the mean |rate|, the diffusion over rods, and the share of samples with the
+/// off-axis part above the axis. Empty (NaN) for a straight rod.
+struct RollSummary {
+  std::vector<double> rates, diffusions, means;
+  double mean_abs_rate = std::nan("");
+  metrics::SampleStatistics diffusion{std::nan(""), std::nan(""), std::nan("")};
+  double up_fraction = std::nan("");
+  double rate(std::size_t r) const { return r < rates.size() ? rates[r] : std::nan(""); }
+  double diffusion_of(std::size_t r) const {
+    return r < diffusions.size() ? diffusions[r] : std::nan("");
+  }
+  double mean_of(std::size_t r) const { return r < means.size() ? means[r] : std::nan(""); }
+};
+
+RollSummary summarize_rolls(const std::vector<RodResult>& rods, const std::vector<int>& fit_lags) {
+  RollSummary summary;
+  long up = 0, samples = 0;
+  double abs_rate = 0.0;
+  for (const RodResult& rod : rods) {
+    const double rate = metrics::turn_rate(rod.roll);
+    summary.rates.push_back(rate);
+    abs_rate += std::abs(rate);
+    summary.diffusions.push_back(
+        rotational_diffusion_of(metrics::without_steady_turn(rod.roll, rate), fit_lags));
+    double sum_sin = 0.0, sum_cos = 0.0;
+    for (const double angle : rod.roll.heading) {
+      up += std::sin(angle) > 0.0 ? 1 : 0;
+      sum_sin += std::sin(angle);
+      sum_cos += std::cos(angle);
+    }
+    summary.means.push_back(std::atan2(sum_sin, sum_cos));
+    samples += static_cast<long>(rod.roll.heading.size());
+  }
+  if (rods.empty() || samples == 0) return summary;
+  summary.mean_abs_rate = abs_rate / static_cast<double>(rods.size());
+  summary.diffusion = metrics::sample_statistics(summary.diffusions);
+  summary.up_fraction = static_cast<double>(up) / static_cast<double>(samples);
+  return summary;
+}
+
+/// roll_windows.csv: each back-to-back window's mean roll (circular, over its samples) beside the
+/// heading's turn over it and its V_x, for every rod: how the side on which the off-axis part lies
+/// steers the rod (scripts/roll-states).
+CsvTable roll_windows_table(const std::vector<RodResult>& rods, int window_samples) {
+  CsvTable table;
+  table.header = {"rod", "t_s", "roll_rad", "turn_rad", "vx_mm_s"};
+  const std::size_t w = static_cast<std::size_t>(window_samples);
+  for (std::size_t r = 0; r < rods.size(); ++r) {
+    const metrics::Track& track = rods[r].track;
+    const metrics::Track& roll = rods[r].roll;
+    for (std::size_t k = 0; k < rods[r].back_to_back.size(); ++k) {
+      double sum_sin = 0.0, sum_cos = 0.0;
+      for (std::size_t i = k * w; i <= (k + 1) * w; ++i) {
+        sum_sin += std::sin(roll.heading[i]);
+        sum_cos += std::cos(roll.heading[i]);
+      }
+      table.rows.push_back({std::to_string(r), number(track.time[k * w]),
+                            number(std::atan2(sum_sin, sum_cos)),
+                            number(track.heading[(k + 1) * w] - track.heading[k * w]),
+                            number(rods[r].back_to_back[k])});
+    }
+  }
+  return table;
+}
 }  // namespace
 
 int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
@@ -154,12 +220,20 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
     simulation.advance(std::llround(warmup / model.dt));
     const std::int64_t kicks_before = simulation.counters().kicks;
     std::vector<engine::Frame> frames{simulation.frame()};
+    // The roll is not in a frame: it is read off the body's basis, for shapes where it matters.
+    std::vector<double> rolls;
+    const auto record_roll = [&] {
+      if (!straight) rolls.push_back(metrics::roll_angle(simulation.state().rods[0].basis));
+    };
+    record_roll();
     for (std::int64_t s = 0; s < samples; ++s) {
       simulation.advance(sample_steps);
       frames.push_back(simulation.frame());
+      record_roll();
     }
     RodResult result;
     result.track = metrics::track_of(frames, 0);
+    if (!straight) result.roll = metrics::roll_track(result.track, rolls);
     result.velocities = metrics::axial_velocities(result.track, window_samples, 1);
     result.back_to_back = metrics::axial_velocities(result.track, window_samples, window_samples);
     result.kicks = simulation.counters().kicks - kicks_before;
@@ -199,6 +273,7 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
     boundary_headings.push_back(metrics::window_boundary_headings(rod.track, window_samples));
     tracks.push_back(rod.track);
   }
+  const RollSummary roll = straight ? RollSummary{} : summarize_rolls(rods, fit_lags);
   const double threshold = request.run_threshold >= 0.0
                                ? request.run_threshold
                                : 0.5 * metrics::quantile(every_velocity, 0.9);
@@ -265,6 +340,14 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   out << line;
   std::snprintf(line, sizeof line, "  tilt      thin end down in %.3f of frames\n", thin_end_down);
   out << line;
+  if (!straight) {
+    std::snprintf(line, sizeof line,
+                  "  roll      about its axis: mean |rate| %.3g rad/s; D about the rate %.4f +- "
+                  "%.4f rad^2/s; off-axis part above the axis in %.3f of frames\n",
+                  roll.mean_abs_rate, roll.diffusion.mean, roll.diffusion.standard_error,
+                  roll.up_fraction);
+    out << line;
+  }
   std::snprintf(line, sizeof line,
                 "  P(V_x)    %s: main peak %.3g mm/s; second peak %.3g mm/s, %.2f as high, "
                 "valley %.2f of it\n"
@@ -311,7 +394,11 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                       "circling_rods",
                       "run_turn_rms_rad",
                       "tumble_turn_rms_rad",
-                      "backward_fraction"};
+                      "backward_fraction",
+                      "roll_rate_abs_rad_s",
+                      "Droll_rad2_s",
+                      "Droll_sem_rad2_s",
+                      "offset_up_fraction"};
     summary.rows.push_back({species_name,
                             std::to_string(request.rods),
                             number(request.duration),
@@ -343,7 +430,11 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                             std::to_string(circling_rods),
                             number(runs.run_turn_rms),
                             number(runs.tumble_turn_rms),
-                            number(backward)});
+                            number(backward),
+                            number(roll.mean_abs_rate),
+                            number(roll.diffusion.mean),
+                            number(roll.diffusion.standard_error),
+                            number(roll.up_fraction)});
     write_file_atomically(request.output / "summary.csv", csv_text(summary));
 
     CsvTable per_rod;
@@ -354,12 +445,16 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                       "Dr_rad2_s",
                       "turn_rate_rad_s",
                       "Dr_about_turn_rad2_s",
-                      "circles"};
+                      "circles",
+                      "roll_rate_rad_s",
+                      "Droll_rad2_s",
+                      "roll_mean_rad"};
     for (std::size_t r = 0; r < rods.size(); ++r) {
       per_rod.rows.push_back(
           {std::to_string(r), std::to_string(model.seed + r), number(per_rod_speed[r]),
            number(per_rod_deviation[r]), number(per_rod_diffusion[r]), number(per_rod_turn_rate[r]),
-           number(per_rod_diffusion_about_turn[r]), per_rod_circles[r] ? "1" : "0"});
+           number(per_rod_diffusion_about_turn[r]), per_rod_circles[r] ? "1" : "0",
+           number(roll.rate(r)), number(roll.diffusion_of(r)), number(roll.mean_of(r))});
     }
     write_file_atomically(request.output / "per_rod.csv", csv_text(per_rod));
 
@@ -369,6 +464,11 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
       distribution.rows.push_back({number(bin_centre[b]), number(density[b])});
     }
     write_file_atomically(request.output / "axial_velocity.csv", csv_text(distribution));
+
+    if (!straight) {
+      write_file_atomically(request.output / "roll_windows.csv",
+                            csv_text(roll_windows_table(rods, window_samples)));
+    }
 
     const metrics::LagStatistics lags = metrics::lag_statistics(tracks, all_lags);
     CsvTable lag_table;

@@ -3,6 +3,8 @@
 
 #include "metrics/single_particle.hpp"
 
+#include <Eigen/Geometry>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -32,7 +34,49 @@ metrics::Track steady_track(double speed, double turn_rate, double dt, int sampl
   return track;
 }
 
+/// The row-major basis of a rod turned by `heading` about the vertical, then `tilt` about its
+/// left (thin end down for tilt > 0), then `roll` about its own axis.
+std::array<double, 9> basis_of(double heading, double tilt, double roll) {
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()) *
+                                    Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitY()) *
+                                    Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                                       .toRotationMatrix();
+  std::array<double, 9> basis;
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 3; ++column) basis[3 * row + column] = rotation(row, column);
+  }
+  return basis;
+}
+
 }  // namespace
+
+TEST_CASE("the roll is the turn about the rod's own axis, whatever its heading and tilt",
+          "[metrics][single]") {
+  for (const double heading : {0.0, 1.0, -2.5, 3.1}) {
+    for (const double tilt : {0.0, 0.05, -0.3}) {
+      for (const double roll : {0.0, 0.4, 1.5707963, -2.0, 3.0}) {
+        INFO("heading " << heading << ", tilt " << tilt << ", roll " << roll);
+        CHECK_THAT(metrics::roll_angle(basis_of(heading, tilt, roll)), WithinAbs(roll, 1e-12));
+      }
+    }
+  }
+  // Body y pointing up is a roll of a quarter turn, down of minus a quarter.
+  CHECK_THAT(metrics::roll_angle(basis_of(0.7, 0.0, std::numbers::pi / 2)),
+             WithinAbs(std::numbers::pi / 2, 1e-12));
+}
+
+TEST_CASE("a roll track unwraps the roll across +-pi and reads a steady spin as a turn rate",
+          "[metrics][single]") {
+  const metrics::Track track = steady_track(10.0, 0.0, 0.01, 200);
+  std::vector<double> roll;
+  for (int i = 0; i < 200; ++i)
+    roll.push_back(std::remainder(-2.0 + 0.5 * i * 0.01 * 10, 2 * std::numbers::pi));
+  const metrics::Track rolled = metrics::roll_track(track, roll);
+  REQUIRE(rolled.heading.size() == 200);
+  CHECK(rolled.position == track.position);
+  CHECK_THAT(rolled.heading.back() - rolled.heading.front(), WithinAbs(0.5 * 199 * 0.1, 1e-9));
+  CHECK_THAT(metrics::turn_rate(rolled), WithinAbs(5.0, 1e-9));
+}
 
 TEST_CASE("track_of unwraps the heading across +-pi and keeps unwrapped positions",
           "[metrics][single]") {
