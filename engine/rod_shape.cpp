@@ -310,6 +310,60 @@ double rnt_step_min(double thin_radius, double thick_radius) {
 
 double rnt_step_max(double thin_radius) { return kRntLength - thin_radius; }
 
+std::vector<std::pair<double, double>> stepped_section_spans(double length,
+                                                             const std::vector<double>& radii,
+                                                             const std::vector<double>& steps) {
+  if (radii.empty() || steps.size() + 1 != radii.size()) {
+    throw std::invalid_argument("stepped_section_spans: expected one fewer step than radii, got " +
+                                std::to_string(steps.size()) + " and " +
+                                std::to_string(radii.size()));
+  }
+  std::vector<std::pair<double, double>> spans;
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const double radius = radii[i];
+    const double first = i == 0 ? radius : steps[i - 1];
+    // The last sphere of a section is placed so that its outline comes down to the next radius
+    // exactly at the step, and the next section's first sphere is centred there, so the two meet
+    // at the step and each section keeps its full radius as far as spheres allow.
+    const double last = i + 1 == radii.size()
+                            ? length - radius
+                            : steps[i] - std::sqrt(radius * radius - radii[i + 1] * radii[i + 1]);
+    spans.emplace_back(first, last);
+  }
+  return spans;
+}
+
+RodProfile stepped_profile(double length, const std::vector<double>& radii,
+                           const std::vector<double>& steps) {
+  if (radii.empty() || steps.size() + 1 != radii.size()) {
+    throw std::invalid_argument("stepped_profile: expected one fewer step than radii, got " +
+                                std::to_string(steps.size()) + " and " +
+                                std::to_string(radii.size()));
+  }
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const bool radius_ok = radii[i] > 0.0 && (i + 1 == radii.size() || radii[i + 1] <= radii[i]);
+    const bool step_ok =
+        i == 0 || (steps[i - 1] > (i == 1 ? 0.0 : steps[i - 2]) && steps[i - 1] < length);
+    if (!radius_ok || !step_ok) {
+      throw std::invalid_argument(
+          "stepped_profile: radii must be positive and not grow, steps grow within the length; "
+          "section " +
+          std::to_string(i) + " is out of order");
+    }
+  }
+  const std::vector<std::pair<double, double>> spans = stepped_section_spans(length, radii, steps);
+  RodProfile profile;
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    // A section exactly one sphere long may come out a rounding error short.
+    if (spans[i].second < spans[i].first - 1e-12) {
+      throw std::invalid_argument("stepped_profile: section " + std::to_string(i) + " (radius " +
+                                  std::to_string(radii[i]) + " mm) has no room for one sphere");
+    }
+    add_evenly_spaced(profile.spheres, spans[i].first, spans[i].second, radii[i]);
+  }
+  return profile;
+}
+
 RodProfile preset_rnt_profile(double thin_radius, double step, double thick_radius,
                               double thin_offset) {
   if (!(thin_radius > 0.0) || !(thin_radius <= thick_radius)) {
@@ -323,15 +377,12 @@ RodProfile preset_rnt_profile(double thin_radius, double step, double thick_radi
                                 ", " + std::to_string(rnt_step_max(thin_radius)) + "] mm, got " +
                                 std::to_string(step));
   }
-  // The last thick sphere is placed so that its outline comes down to the thin radius exactly at
-  // the step, and the first thin sphere is centred there, so the two meet at the step and the
-  // thick part keeps its full radius as far as spheres allow.
-  RodProfile profile;
-  add_evenly_spaced(profile.spheres, thick_radius, step - rnt_shoulder(thin_radius, thick_radius),
-                    thick_radius);
-  const std::size_t thick_count = profile.spheres.size();
-  add_evenly_spaced(profile.spheres, step, kRntLength - thin_radius, thin_radius);
-  for (std::size_t k = thick_count; k < profile.spheres.size(); ++k) {
+  RodProfile profile = stepped_profile(kRntLength, {thick_radius, thin_radius}, {step});
+  // The thin part's spheres are those beyond the thick part's.
+  std::vector<Sphere> thick_part;
+  const auto spans = stepped_section_spans(kRntLength, {thick_radius, thin_radius}, {step});
+  add_evenly_spaced(thick_part, spans[0].first, spans[0].second, thick_radius);
+  for (std::size_t k = thick_part.size(); k < profile.spheres.size(); ++k) {
     profile.spheres[k].lateral = thin_offset;
   }
   return profile;

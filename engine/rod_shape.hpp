@@ -4,6 +4,7 @@
 // not the sum of the spheres.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rodsort::engine {
@@ -36,6 +37,22 @@ RodProfile preset_a_profile();
 /// `thin_offset`: the thin part's axis lies that far from the thick part's, parallel to it [mm].
 RodProfile preset_rnt_profile(double thin_radius = kRntThinRadius, double step = kRntLength / 2,
                               double thick_radius = kRntThickRadius, double thin_offset = 0.0);
+/// A rod of cylinders in steps, thick end first, `length` tip to tip [mm]: section i has radius
+/// radii[i] and begins at steps[i - 1] from the thick tip (the first at the tip); one fewer step
+/// than radii, the steps growing, the radii not. Each section is built as the RnT preset's two
+/// are: its spheres evenly spaced at most 0.872 radii apart, from the one touching the thick tip
+/// (or centred on the section's step) to the one whose outline comes down to the next radius
+/// exactly at the next step (or that touches the thin tip). With radii {thick, thin} and steps
+/// {step} it is the RnT preset's profile. Throws std::invalid_argument for radii and steps out of
+/// that order or a section with no room for one sphere (stepped_section_spans says which).
+RodProfile stepped_profile(double length, const std::vector<double>& radii,
+                           const std::vector<double>& steps);
+/// Where the sphere centres of each section of stepped_profile run, first to last [mm]: a section
+/// whose last comes before its first has no room for one sphere. Radii and steps as there; the
+/// sizes must match (one fewer step than radii) and each radius be at least the next.
+std::vector<std::pair<double, double>> stepped_section_spans(double length,
+                                                             const std::vector<double>& radii,
+                                                             const std::vector<double>& steps);
 /// Where the RnT preset's step may lie, from the thick tip [mm], for given radii: far enough from
 /// the thick tip for one whole thick sphere, and from the thin tip for one thin sphere.
 double rnt_step_min(double thin_radius, double thick_radius = kRntThickRadius);

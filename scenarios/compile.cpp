@@ -26,6 +26,79 @@ std::string percent(double fraction) {
 
 std::string at(const SourceLocation& where) { return " (" + where.to_string() + ")"; }
 
+/// A stepped rod's profile, once its radii and steps are in order and every section has room for
+/// one whole sphere; else an error on the key at fault.
+std::optional<engine::RodProfile> build_stepped_profile(const ShapeSpec& shape,
+                                                        Diagnostics& diagnostics) {
+  const double length = shape.stepped_length.value;
+  const std::vector<double>& radii = shape.stepped_radii.value;
+  const std::vector<double>& steps = shape.stepped_steps.value;
+  const Sourced<std::vector<double>>& radii_key = shape.stepped_radii;
+  const Sourced<std::vector<double>>& steps_key = shape.stepped_steps;
+  if (radii.empty()) return std::nullopt;  // missing: said when read
+  if (steps.size() + 1 != radii.size()) {
+    diagnostics.error(steps_key.where, steps_key.path,
+                      "expected " + std::to_string(radii.size() - 1) +
+                          (radii.size() == 2 ? " step" : " steps") + ", one fewer than the " +
+                          std::to_string(radii.size()) + " radii, got " +
+                          std::to_string(steps.size()));
+    return std::nullopt;
+  }
+  for (std::size_t i = 1; i < radii.size(); ++i) {
+    if (radii[i] > radii[i - 1]) {
+      diagnostics.error(radii_key.where, radii_key.path,
+                        "radius " + std::to_string(i) + " (" + mm(radii[i]) +
+                            ") is larger than radius " + std::to_string(i - 1) + " (" +
+                            mm(radii[i - 1]) +
+                            "); list the sections from the thick end, none thicker than the one "
+                            "before");
+      return std::nullopt;
+    }
+  }
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const double before = i == 0 ? 0.0 : steps[i - 1];
+    if (!(steps[i] > before) || !(steps[i] < length)) {
+      diagnostics.error(steps_key.where, steps_key.path,
+                        "step " + std::to_string(i) + " at " + mm(steps[i]) + " must lie beyond " +
+                            (i == 0 ? "the thick tip" : mm(before)) +
+                            " and before the thin tip at " + mm(length) +
+                            "; list the steps from the thick tip, growing");
+      return std::nullopt;
+    }
+  }
+  const auto spans = engine::stepped_section_spans(length, radii, steps);
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    if (spans[i].second < spans[i].first - 1e-12) {
+      const bool last = i + 1 == spans.size();
+      const Sourced<double>& length_key = shape.stepped_length;
+      const std::string what = "section " + std::to_string(i) + " (radius " + mm(radii[i]) +
+                               ") has no room for one whole sphere: its centres would run from " +
+                               mm(std::round(spans[i].first * 1e4) / 1e4) + " to " +
+                               mm(std::round(spans[i].second * 1e4) / 1e4) + " from the thick tip";
+      if (last && steps.empty()) {
+        diagnostics.error(
+            length_key.where, length_key.path,
+            what + "; expected a length of at least twice the radius, got " + mm(length));
+      } else {
+        diagnostics.error(steps_key.where, steps_key.path,
+                          what + "; expected the steps further apart, or from the tips");
+      }
+      return std::nullopt;
+    }
+  }
+  engine::RodProfile profile = engine::stepped_profile(length, radii, steps);
+  // As many spheres as an explicit list or a taper may have.
+  constexpr std::size_t kMaxSpheres = 200;
+  if (profile.spheres.size() > kMaxSpheres) {
+    diagnostics.error(radii_key.where, radii_key.path,
+                      "give a rod of " + std::to_string(profile.spheres.size()) +
+                          " spheres (neighbours at most 0.872 radii apart), more than " +
+                          std::to_string(kMaxSpheres) + "; expected larger radii");
+    return std::nullopt;
+  }
+  return profile;
+}
+
 std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnostics& diagnostics) {
   switch (shape.kind) {
     case ShapeSpec::Kind::preset:
@@ -106,6 +179,8 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
       return engine::linear_taper_profile(length, thick, thin,
                                           static_cast<int>(shape.taper_spheres.value));
     }
+    case ShapeSpec::Kind::stepped:
+      return build_stepped_profile(shape, diagnostics);
     case ShapeSpec::Kind::spheres: {
       engine::RodProfile profile;
       for (const auto& [axial, radius] : shape.spheres.value) {

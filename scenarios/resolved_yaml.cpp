@@ -83,6 +83,13 @@ void write_shape(Writer& w, const ShapeSpec& shape) {
       w.key("spheres").whole(shape.taper_spheres.value);
       w.end_map();
       break;
+    case ShapeSpec::Kind::stepped:
+      w.key("stepped").begin_map();
+      w.key("length").number(shape.stepped_length.value);
+      w.key("radii").numbers(shape.stepped_radii.value);
+      w.key("steps").numbers(shape.stepped_steps.value);
+      w.end_map();
+      break;
     case ShapeSpec::Kind::spheres:
       w.key("spheres").begin_list();
       for (const auto& sphere : shape.spheres.value) w.pair(sphere);

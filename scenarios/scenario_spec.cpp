@@ -20,10 +20,11 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
   out.path = shape.path();
   const bool has_preset = shape.has("preset");
   const bool has_taper = shape.has("taper");
+  const bool has_stepped = shape.has("stepped");
   const bool has_spheres = shape.has("spheres");
-  if (int(has_preset) + int(has_taper) + int(has_spheres) > 1) {
+  if (int(has_preset) + int(has_taper) + int(has_stepped) + int(has_spheres) > 1) {
     diagnostics.error(shape.where(), shape.path(),
-                      "give one of preset, taper or spheres, not several");
+                      "give one of preset, taper, stepped or spheres, not several");
   }
   out.thick_radius = shape.real("thick_radius");
   out.thin_radius = shape.real("thin_radius");
@@ -36,6 +37,18 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
     out.taper_thick_radius = taper.required_real("thick_radius", "with taper");
     out.taper_thin_radius = taper.required_real("thin_radius", "with taper");
     out.taper_spheres = taper.integer("spheres");
+  } else if (has_stepped) {
+    out.kind = ShapeSpec::Kind::stepped;
+    SectionReader stepped = shape.section("stepped");
+    out.stepped_length = stepped.required_real("length", "with stepped");
+    if (stepped.has("radii")) {
+      out.stepped_radii = stepped.real_list("radii");
+    } else {
+      diagnostics.error(stepped.where(), stepped.path_of("radii"),
+                        "missing; with stepped it is required (a list of the sections' radii in "
+                        "mm, thick end first)");
+    }
+    out.stepped_steps = stepped.real_list("steps");
   } else if (has_spheres && !has_preset) {
     out.kind = ShapeSpec::Kind::spheres;
     out.spheres = *shape.sphere_list("spheres");

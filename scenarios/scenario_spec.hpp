@@ -19,7 +19,7 @@
 namespace rodsort::scenarios {
 
 struct ShapeSpec {
-  enum class Kind { preset, taper, spheres };
+  enum class Kind { preset, taper, stepped, spheres };
   Kind kind = Kind::preset;
   Sourced<std::string> preset;         ///< "A" or "RnT"
   Sourced<double> thick_radius;        ///< RnT's thick part [mm]
@@ -30,6 +30,9 @@ struct ShapeSpec {
   Sourced<double> taper_thick_radius;  ///< [mm]
   Sourced<double> taper_thin_radius;   ///< [mm]
   Sourced<std::int64_t> taper_spheres;
+  Sourced<double> stepped_length;                       ///< tip to tip [mm]
+  Sourced<std::vector<double>> stepped_radii;           ///< each section's, thick end first [mm]
+  Sourced<std::vector<double>> stepped_steps;           ///< where each next section begins [mm]
   Sourced<std::vector<std::array<double, 2>>> spheres;  ///< [axial, radius] [mm]
   SourceLocation where;
   std::string path;

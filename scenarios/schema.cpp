@@ -102,11 +102,12 @@ std::vector<KeyInfo> scenario_keys() {
        "Name of the species, used in output columns; unique.",
        "the preset's name, else species<i>"},
       {"species[].shape", V::section, "", "", {}, {},
-       "Profile of the rod: a `preset`, a `taper`, or explicit `spheres` (one of the three)."},
+       "Profile of the rod: a `preset`, a `taper`, a `stepped` rod, or explicit `spheres` (one of "
+       "the four)."},
       {"species[].shape.preset", V::choice, "", "", {}, {"A", "RnT"},
        "A: the paper's rod, 9 spheres with radii 0.55 -> 0.20 mm, 4.5 mm tip to tip. RnT: 3.5 mm, "
        "r = thick_radius from the thick tip to the step, r = thin_radius beyond it.",
-       "A, when neither taper nor spheres is given"},
+       "A, when no taper, stepped or spheres is given"},
       {"species[].shape.thick_radius", V::real, "mm", "0.55", half_open(0, 1.75), {},
        "Radius of the thick part of the RnT preset (RnT only): the paper's 1.1 mm thick. With the "
        "lid it sets RnT's clearance (docs/model.md, \"The clearance to the lid\")."},
@@ -134,6 +135,20 @@ std::vector<KeyInfo> scenario_keys() {
        "Radius of the sphere at the thin end (required with taper)."},
       {"species[].shape.taper.spheres", V::integer, "", "9", closed(2, 200), {},
        "Number of spheres, evenly spaced."},
+      {"species[].shape.stepped", V::section, "", "", {}, {},
+       "A rod of cylinders in steps, thick end first, each section built as the RnT preset's two: "
+       "spheres evenly spaced at most 0.872 radii apart, the last placed so that its outline comes "
+       "down to the next radius exactly at the step, the next section's first centred on the "
+       "step; at most 200 spheres. `{length: 3.5, radii: [0.55, 0.3], steps: [1.75]}` is the RnT "
+       "preset."},
+      {"species[].shape.stepped.length", V::real, "mm", "", positive(), {},
+       "Tip to tip (required with stepped)."},
+      {"species[].shape.stepped.radii", V::real_list, "mm", "", positive(), {},
+       "Each section's radius, from the thick end; none larger than the one before (required "
+       "with stepped)."},
+      {"species[].shape.stepped.steps", V::real_list, "mm", "[]", positive(), {},
+       "Where each next section begins, from the thick tip, growing: one fewer than the radii, "
+       "each leaving room for one whole sphere on either side."},
       {"species[].shape.spheres", V::sphere_list, "mm", "", any_number(), {},
        "Explicit spheres [axial position, radius], the axial position growing from the thick to "
        "the thin end (any origin).",

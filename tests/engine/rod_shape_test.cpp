@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "engine/units.hpp"
 
@@ -352,4 +353,52 @@ TEST_CASE("an RnT whose thin part is off its axis", "[rod_shape]") {
   // Every sphere is in the x-y plane, so z stays a principal axis, with the largest moment.
   CHECK(shape.inertia_normal > shape.inertia_transverse);
   CHECK(shape.inertia_normal == Approx(straight.inertia_transverse).epsilon(2e-2));
+}
+
+TEST_CASE("a rod in one step is the RnT preset, sphere for sphere", "[rod_shape]") {
+  for (const double step : {1.75, 1.2, 3.0}) {
+    const RodProfile preset = preset_rnt_profile(0.3, step);
+    const RodProfile stepped = stepped_profile(kRntLength, {kRntThickRadius, 0.3}, {step});
+    INFO("step " << step);
+    REQUIRE(stepped.spheres.size() == preset.spheres.size());
+    for (std::size_t k = 0; k < preset.spheres.size(); ++k) {
+      CHECK(stepped.spheres[k].axial == preset.spheres[k].axial);
+      CHECK(stepped.spheres[k].radius == preset.spheres[k].radius);
+    }
+  }
+}
+
+TEST_CASE("a rod in two steps meets each step and keeps its length", "[rod_shape]") {
+  const std::vector<double> radii{0.55, 0.4, 0.25}, steps{1.5, 3.0};
+  const RodProfile profile = stepped_profile(4.5, radii, steps);
+  const std::vector<Sphere>& spheres = profile.spheres;
+  // The tips: the first sphere touches the thick tip, the last the thin one.
+  CHECK(spheres.front().axial - spheres.front().radius == Approx(0.0).margin(1e-12));
+  CHECK(spheres.back().axial + spheres.back().radius == Approx(4.5).epsilon(1e-12));
+  for (std::size_t k = 1; k < spheres.size(); ++k) {
+    CHECK(spheres[k].radius <= spheres[k - 1].radius);
+    CHECK(spheres[k].axial > spheres[k - 1].axial);
+    // Neighbours of one section at most 0.872 radii apart.
+    if (spheres[k].radius == spheres[k - 1].radius) {
+      CHECK(spheres[k].axial - spheres[k - 1].axial <= 0.872 * spheres[k].radius + 1e-12);
+    }
+  }
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    // The section's last sphere comes down to the next radius exactly at the step, and the next
+    // section's first is centred on it.
+    double last = -1.0, first = 1e9;
+    for (const Sphere& sphere : spheres) {
+      if (sphere.radius == radii[i]) last = std::max(last, sphere.axial);
+      if (sphere.radius == radii[i + 1]) first = std::min(first, sphere.axial);
+    }
+    const double reach = std::sqrt(radii[i] * radii[i] - (steps[i] - last) * (steps[i] - last));
+    CHECK(reach == Approx(radii[i + 1]).epsilon(1e-12));
+    CHECK(first == Approx(steps[i]).epsilon(1e-12));
+  }
+  // A section with no room for one sphere, radii that grow, or a step count that does not match
+  // are refused.
+  CHECK_THROWS_AS(stepped_profile(4.5, radii, {0.6, 3.0}), std::invalid_argument);
+  CHECK_THROWS_AS(stepped_profile(4.5, {0.25, 0.4}, {2.0}), std::invalid_argument);
+  CHECK_THROWS_AS(stepped_profile(4.5, radii, {1.5}), std::invalid_argument);
+  CHECK_THROWS_AS(stepped_profile(4.5, radii, {3.0, 1.5}), std::invalid_argument);
 }

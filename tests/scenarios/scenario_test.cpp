@@ -222,6 +222,8 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
       "     count: 3, initial: {region: inside_trap, heading: toward_apex}}\n"
       "  - {name: D, shape: {preset: RnT, thin_radius: 0.25, step: 2.2}, count: 4,\n"
       "     initial: {region: outside_trap, heading: 45}}\n"
+      "  - {name: E, shape: {stepped: {length: 4.5, radii: [0.55, 0.4, 0.25], steps: [1.5, 3]}},\n"
+      "     count: 2}\n"
       "materials:\n"
       "  steel-wall: {restitution: 0.5}\n"
       "  rod-steel: {friction: 0.2}\n"
@@ -243,6 +245,30 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
   CHECK(second.model.materials.get(steel, second.model.materials.index_of("rod")).friction == 0.2);
   CHECK_THAT(resolved, Catch::Contains("derived:"));
   CHECK_THAT(resolved, Catch::Contains("gamma:"));
+}
+
+TEST_CASE("a stepped rod of one step is the RnT preset", "[scenario]") {
+  const Scenario scenario = load_ok(
+      "species:\n"
+      "  - {name: S, shape: {stepped: {length: 3.5, radii: [0.55, 0.3], steps: [1.75]}}, count: "
+      "1}\n"
+      "  - {name: RnT, shape: {preset: RnT}, count: 1}\n");
+  const auto& stepped = scenario.model.species[0].shape;
+  const auto& preset = scenario.model.species[1].shape;
+  REQUIRE(stepped.spheres.size() == preset.spheres.size());
+  for (std::size_t k = 0; k < preset.spheres.size(); ++k) {
+    CHECK(stepped.spheres[k].axial == preset.spheres[k].axial);
+    CHECK(stepped.spheres[k].radius == preset.spheres[k].radius);
+  }
+  CHECK(stepped.mass == preset.mass);
+  CHECK(stepped.inertia_transverse == preset.inertia_transverse);
+  // A stepped rod needs its radii, the right number of steps, and room in every section.
+  CHECK_THAT(errors_of("species: [{shape: {stepped: {length: 4.5, radii: [0.55, 0.4]}}}]\n"),
+             Catch::Contains("species[0].shape.stepped.steps: expected 1 step, one fewer than "
+                             "the 2 radii, got 0"));
+  CHECK_THAT(errors_of("species: [{shape: {stepped: {length: 4.5, radii: [0.55], steps: []}, "
+                       "preset: A}}]\n"),
+             Catch::Contains("give one of preset, taper, stepped or spheres, not several"));
 }
 
 TEST_CASE("the RnT step is checked against the thin radius and applies to RnT only", "[scenario]") {
