@@ -91,6 +91,16 @@ struct RollSummary {
   double mean_of(std::size_t r) const { return r < means.size() ? means[r] : std::nan(""); }
 };
 
+/// The mean direction of angles[first, last) [rad], in (-pi, pi].
+double circular_mean(const std::vector<double>& angles, std::size_t first, std::size_t last) {
+  double sum_sin = 0.0, sum_cos = 0.0;
+  for (std::size_t i = first; i < last; ++i) {
+    sum_sin += std::sin(angles[i]);
+    sum_cos += std::cos(angles[i]);
+  }
+  return std::atan2(sum_sin, sum_cos);
+}
+
 RollSummary summarize_rolls(const std::vector<RodResult>& rods, const std::vector<int>& fit_lags) {
   RollSummary summary;
   long up = 0, samples = 0;
@@ -101,13 +111,8 @@ RollSummary summarize_rolls(const std::vector<RodResult>& rods, const std::vecto
     abs_rate += std::abs(rate);
     summary.diffusions.push_back(
         rotational_diffusion_of(metrics::without_steady_turn(rod.roll, rate), fit_lags));
-    double sum_sin = 0.0, sum_cos = 0.0;
-    for (const double angle : rod.roll.heading) {
-      up += std::sin(angle) > 0.0 ? 1 : 0;
-      sum_sin += std::sin(angle);
-      sum_cos += std::cos(angle);
-    }
-    summary.means.push_back(std::atan2(sum_sin, sum_cos));
+    for (const double angle : rod.roll.heading) up += std::sin(angle) > 0.0 ? 1 : 0;
+    summary.means.push_back(circular_mean(rod.roll.heading, 0, rod.roll.heading.size()));
     samples += static_cast<long>(rod.roll.heading.size());
   }
   if (rods.empty() || samples == 0) return summary;
@@ -128,13 +133,8 @@ CsvTable roll_windows_table(const std::vector<RodResult>& rods, int window_sampl
     const metrics::Track& track = rods[r].track;
     const metrics::Track& roll = rods[r].roll;
     for (std::size_t k = 0; k < rods[r].back_to_back.size(); ++k) {
-      double sum_sin = 0.0, sum_cos = 0.0;
-      for (std::size_t i = k * w; i <= (k + 1) * w; ++i) {
-        sum_sin += std::sin(roll.heading[i]);
-        sum_cos += std::cos(roll.heading[i]);
-      }
       table.rows.push_back({std::to_string(r), number(track.time[k * w]),
-                            number(std::atan2(sum_sin, sum_cos)),
+                            number(circular_mean(roll.heading, k * w, (k + 1) * w + 1)),
                             number(track.heading[(k + 1) * w] - track.heading[k * w]),
                             number(rods[r].back_to_back[k])});
     }
