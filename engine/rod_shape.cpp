@@ -333,8 +333,12 @@ std::vector<std::pair<double, double>> stepped_section_spans(double length,
   return spans;
 }
 
-RodProfile stepped_profile(double length, const std::vector<double>& radii,
-                           const std::vector<double>& steps) {
+namespace {
+
+/// stepped_profile, and where each section's spheres begin in the profile.
+RodProfile stepped_sections(double length, const std::vector<double>& radii,
+                            const std::vector<double>& steps,
+                            std::vector<std::size_t>& section_starts) {
   if (radii.empty() || steps.size() + 1 != radii.size()) {
     throw std::invalid_argument("stepped_profile: expected one fewer step than radii, got " +
                                 std::to_string(steps.size()) + " and " +
@@ -353,7 +357,9 @@ RodProfile stepped_profile(double length, const std::vector<double>& radii,
   }
   const std::vector<std::pair<double, double>> spans = stepped_section_spans(length, radii, steps);
   RodProfile profile;
+  section_starts.clear();
   for (std::size_t i = 0; i < spans.size(); ++i) {
+    section_starts.push_back(profile.spheres.size());
     // A section exactly one sphere long may come out a rounding error short.
     if (spans[i].second < spans[i].first - 1e-12) {
       throw std::invalid_argument("stepped_profile: section " + std::to_string(i) + " (radius " +
@@ -362,6 +368,14 @@ RodProfile stepped_profile(double length, const std::vector<double>& radii,
     add_evenly_spaced(profile.spheres, spans[i].first, spans[i].second, radii[i]);
   }
   return profile;
+}
+
+}  // namespace
+
+RodProfile stepped_profile(double length, const std::vector<double>& radii,
+                           const std::vector<double>& steps) {
+  std::vector<std::size_t> section_starts;
+  return stepped_sections(length, radii, steps, section_starts);
 }
 
 RodProfile preset_rnt_profile(double thin_radius, double step, double thick_radius,
@@ -377,12 +391,10 @@ RodProfile preset_rnt_profile(double thin_radius, double step, double thick_radi
                                 ", " + std::to_string(rnt_step_max(thin_radius)) + "] mm, got " +
                                 std::to_string(step));
   }
-  RodProfile profile = stepped_profile(kRntLength, {thick_radius, thin_radius}, {step});
-  // The thin part's spheres are those beyond the thick part's.
-  std::vector<Sphere> thick_part;
-  const auto spans = stepped_section_spans(kRntLength, {thick_radius, thin_radius}, {step});
-  add_evenly_spaced(thick_part, spans[0].first, spans[0].second, thick_radius);
-  for (std::size_t k = thick_part.size(); k < profile.spheres.size(); ++k) {
+  std::vector<std::size_t> section_starts;
+  RodProfile profile =
+      stepped_sections(kRntLength, {thick_radius, thin_radius}, {step}, section_starts);
+  for (std::size_t k = section_starts[1]; k < profile.spheres.size(); ++k) {
     profile.spheres[k].lateral = thin_offset;
   }
   return profile;
