@@ -11,6 +11,16 @@
 
 namespace rodsort::metrics {
 
+namespace {
+
+/// Appends an angle to a series kept continuous: the step from the last angle taken the shorter
+/// way round.
+void append_unwrapped(std::vector<double>& series, double angle) {
+  series.push_back(series.empty() ? angle : series.back() + wrap_angle(angle - series.back()));
+}
+
+}  // namespace
+
 Track track_of(const std::vector<engine::Frame>& frames, int rod) {
   Track track;
   for (const engine::Frame& frame : frames) {
@@ -19,9 +29,7 @@ Track track_of(const std::vector<engine::Frame>& frames, int rod) {
     track.time.push_back(frame.time);
     track.position.push_back(r.unwrapped);
     track.tilt.push_back(r.axis.z());
-    track.heading.push_back(track.heading.empty()
-                                ? phi
-                                : track.heading.back() + wrap_angle(phi - track.heading.back()));
+    append_unwrapped(track.heading, phi);
   }
   return track;
 }
@@ -42,11 +50,7 @@ Track roll_track(const Track& track, const std::vector<double>& roll) {
   assert(roll.size() == track.time.size());
   Track rolled = track;
   rolled.heading.clear();
-  for (const double angle : roll) {
-    rolled.heading.push_back(
-        rolled.heading.empty() ? angle
-                               : rolled.heading.back() + wrap_angle(angle - rolled.heading.back()));
-  }
+  for (const double angle : roll) append_unwrapped(rolled.heading, angle);
   return rolled;
 }
 
