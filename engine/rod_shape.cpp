@@ -339,11 +339,8 @@ namespace {
 RodProfile stepped_sections(double length, const std::vector<double>& radii,
                             const std::vector<double>& steps,
                             std::vector<std::size_t>& section_starts) {
-  if (radii.empty() || steps.size() + 1 != radii.size()) {
-    throw std::invalid_argument("stepped_profile: expected one fewer step than radii, got " +
-                                std::to_string(steps.size()) + " and " +
-                                std::to_string(radii.size()));
-  }
+  // Checks that there is one fewer step than radii before the order is read.
+  const std::vector<std::pair<double, double>> spans = stepped_section_spans(length, radii, steps);
   for (std::size_t i = 0; i < radii.size(); ++i) {
     const bool radius_ok = radii[i] > 0.0 && (i + 1 == radii.size() || radii[i + 1] <= radii[i]);
     const bool step_ok =
@@ -355,7 +352,6 @@ RodProfile stepped_sections(double length, const std::vector<double>& radii,
           std::to_string(i) + " is out of order");
     }
   }
-  const std::vector<std::pair<double, double>> spans = stepped_section_spans(length, radii, steps);
   RodProfile profile;
   section_starts.clear();
   for (std::size_t i = 0; i < spans.size(); ++i) {
