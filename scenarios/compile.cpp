@@ -183,7 +183,7 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
       return build_stepped_profile(shape, diagnostics);
     case ShapeSpec::Kind::spheres: {
       engine::RodProfile profile;
-      for (const auto& [axial, radius] : shape.spheres.value) {
+      for (const auto& [axial, radius, lateral] : shape.spheres.value) {
         if (!profile.spheres.empty() && axial <= profile.spheres.back().axial) {
           diagnostics.error(shape.spheres.where, shape.spheres.path,
                             "sphere " + std::to_string(profile.spheres.size()) +
@@ -194,7 +194,7 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
                                 "axial position growing");
           return std::nullopt;
         }
-        profile.spheres.push_back({axial, radius});
+        profile.spheres.push_back({axial, radius, lateral});
       }
       return profile;
     }
@@ -237,6 +237,19 @@ void check_roughness(const ScenarioSpec& spec, const engine::Model& model,
   }
 }
 
+/// How thick a rod is at its thickest roll about its axis: a straight rod's diameter; for one with
+/// spheres off its axis, the most that two spheres span when the plane of their offsets stands
+/// upright, max over i, j of |lateral_i - lateral_j| + r_i + r_j.
+double thickness_at_any_roll(const engine::RodShape& shape) {
+  double thickest = 0.0;
+  for (const engine::Sphere& a : shape.spheres) {
+    for (const engine::Sphere& b : shape.spheres) {
+      thickest = std::max(thickest, std::abs(a.lateral - b.lateral) + a.radius + b.radius);
+    }
+  }
+  return thickest;
+}
+
 void check_fits_gap(const engine::RodShape& shape, const SpeciesSpec& species,
                     const ScenarioSpec& spec, Diagnostics& diagnostics) {
   const double gap = spec.gap.value;
@@ -246,6 +259,15 @@ void check_fits_gap(const engine::RodShape& shape, const SpeciesSpec& species,
                           " thick, which does not fit in the gap of " + mm(gap) +
                           " between base and lid (drive.gap" + at(spec.gap.where) +
                           "); the gap must exceed the rod's thickness");
+  } else if (const double rolled = thickness_at_any_roll(shape); rolled >= gap) {
+    // Placement draws the roll of a rod with off-axis spheres at random.
+    diagnostics.error(species.shape.where, species.shape.path,
+                      "the rod is " + mm(std::ceil(rolled * 1e4) / 1e4) +
+                          " thick when rolled about its axis so that its off-axis spheres lie "
+                          "above one another, which does not fit in the gap of " +
+                          mm(gap) + " between base and lid (drive.gap" + at(spec.gap.where) +
+                          "); the gap must exceed the rod's thickness at every roll, since "
+                          "placement draws the roll at random");
   }
   if (shape.length <= gap) {
     diagnostics.error(species.shape.where, species.shape.path,

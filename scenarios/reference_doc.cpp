@@ -40,7 +40,7 @@ std::string type_name(const KeyInfo& row) {
     case ValueType::real_list:
       return "list of numbers";
     case ValueType::sphere_list:
-      return "list of [axial, radius]";
+      return "list of [axial, radius] or [axial, radius, lateral]";
     case ValueType::any:
       return "see description";
   }

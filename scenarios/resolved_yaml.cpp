@@ -35,6 +35,13 @@ class Writer {
          << YAML::EndSeq;
     return *this;
   }
+  /// A sphere as written: [axial, radius], with its lateral offset third where it has one.
+  Writer& sphere(const std::array<double, 3>& value) {
+    if (value[2] == 0.0) return pair({value[0], value[1]});
+    out_ << YAML::Flow << YAML::BeginSeq << format_real(value[0]) << format_real(value[1])
+         << format_real(value[2]) << YAML::EndSeq;
+    return *this;
+  }
   Writer& numbers(const std::vector<double>& values) {
     out_ << YAML::Flow << YAML::BeginSeq;
     for (const double value : values) out_ << format_real(value);
@@ -92,7 +99,7 @@ void write_shape(Writer& w, const ShapeSpec& shape) {
       break;
     case ShapeSpec::Kind::spheres:
       w.key("spheres").begin_list();
-      for (const auto& sphere : shape.spheres.value) w.pair(sphere);
+      for (const auto& sphere : shape.spheres.value) w.sphere(sphere);
       w.end_list();
       break;
   }

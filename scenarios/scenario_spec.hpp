@@ -33,7 +33,7 @@ struct ShapeSpec {
   Sourced<double> stepped_length;                       ///< tip to tip [mm]
   Sourced<std::vector<double>> stepped_radii;           ///< each section's, thick end first [mm]
   Sourced<std::vector<double>> stepped_steps;           ///< where each next section begins [mm]
-  Sourced<std::vector<std::array<double, 2>>> spheres;  ///< [axial, radius] [mm]
+  Sourced<std::vector<std::array<double, 3>>> spheres;  ///< [axial, radius, lateral] [mm]
   SourceLocation where;
   std::string path;
 };

@@ -26,7 +26,7 @@ enum class ValueType {
   choice,           ///< one of the row's keywords
   real_pair,        ///< [x, y]; one number stands for both
   real_list,        ///< [a, b, ...]
-  sphere_list,      ///< [[axial, radius], ...]
+  sphere_list,      ///< [[axial, radius], ...], each with an optional lateral offset third
   any,              ///< any YAML; read by hand, not by the generic reader
 };
 

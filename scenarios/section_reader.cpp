@@ -284,13 +284,15 @@ Sourced<std::vector<double>> SectionReader::real_list(std::string_view key) {
   return out;
 }
 
-std::optional<Sourced<std::vector<std::array<double, 2>>>> SectionReader::sphere_list(
+std::optional<Sourced<std::vector<std::array<double, 3>>>> SectionReader::sphere_list(
     std::string_view key) {
   if (!has(key)) return std::nullopt;
   const Found found = find(key);
-  auto out = start<std::vector<std::array<double, 2>>>(key, found);
+  auto out = start<std::vector<std::array<double, 3>>>(key, found);
   const SourceNode& node = *found.node;
-  const std::string expected = "expected a list of spheres [axial position, radius] in mm";
+  const std::string expected =
+      "expected a list of spheres [axial position, radius] or [axial position, radius, lateral "
+      "offset] in mm";
   if (!node.is_sequence() || node.items.empty()) {
     diagnostics_.error(node.where, out.path, expected + ", got " + node.describe());
     return out;
@@ -305,18 +307,20 @@ std::optional<Sourced<std::vector<std::array<double, 2>>>> SectionReader::sphere
   for (std::size_t i = 0; i < node.items.size(); ++i) {
     const SourceNode& item = node.items[i];
     const std::string item_path = out.path + "[" + std::to_string(i) + "]";
-    if (!item.is_sequence() || item.items.size() != 2) {
+    if (!item.is_sequence() || item.items.size() < 2 || item.items.size() > 3) {
       diagnostics_.error(item.where, item_path, expected + ", got " + item.describe());
       continue;
     }
     const auto axial = to_real(item.items[0], found.row, item_path, false);
     const auto radius = to_real(item.items[1], found.row, item_path, false);
+    const auto lateral =
+        item.items.size() == 3 ? to_real(item.items[2], found.row, item_path, false) : 0.0;
     if (radius && *radius <= 0.0) {
       diagnostics_.error(item.items[1].where, item_path,
                          "a sphere's radius must be > 0 mm, got " + item.items[1].describe());
       continue;
     }
-    if (axial && radius) out.value.push_back({*axial, *radius});
+    if (axial && radius && lateral) out.value.push_back({*axial, *radius, *lateral});
   }
   return out;
 }

@@ -61,7 +61,7 @@ class SectionReader {
   std::optional<Sourced<std::array<double, 2>>> optional_real_pair(std::string_view key);
   Sourced<std::vector<double>> real_list(std::string_view key);
   /// Pairs [axial, radius]; radii must be > 0.
-  std::optional<Sourced<std::vector<std::array<double, 2>>>> sphere_list(std::string_view key);
+  std::optional<Sourced<std::vector<std::array<double, 3>>>> sphere_list(std::string_view key);
 
   SectionReader section(std::string_view key);
   /// The items of a list of sections; the schema's default list when absent.

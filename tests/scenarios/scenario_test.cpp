@@ -4,10 +4,12 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "engine/rod_shape.hpp"
 #include "engine/units.hpp"
 #include "trap/cell_wall.hpp"
 #include "trap/obstacle.hpp"
@@ -69,6 +71,7 @@ void check_same_model(const engine::Model& a, const engine::Model& b) {
     for (std::size_t k = 0; k < s.shape.spheres.size(); ++k) {
       CHECK(s.shape.spheres[k].axial == t.shape.spheres[k].axial);
       CHECK(s.shape.spheres[k].radius == t.shape.spheres[k].radius);
+      CHECK(s.shape.spheres[k].lateral == t.shape.spheres[k].lateral);
     }
   }
   REQUIRE(a.rods.size() == b.rods.size());
@@ -224,6 +227,8 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
       "     initial: {region: outside_trap, heading: 45}}\n"
       "  - {name: E, shape: {stepped: {length: 4.5, radii: [0.55, 0.4, 0.25], steps: [1.5, 3]}},\n"
       "     count: 2}\n"
+      "  - {name: F, shape: {spheres: [[0, 0.5, 0.02], [0.6, 0.45], [1.2, 0.4, -0.03]]},\n"
+      "     count: 2}\n"
       "materials:\n"
       "  steel-wall: {restitution: 0.5}\n"
       "  rod-steel: {friction: 0.2}\n"
@@ -245,6 +250,10 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
   CHECK(second.model.materials.get(steel, second.model.materials.index_of("rod")).friction == 0.2);
   CHECK_THAT(resolved, Catch::Contains("derived:"));
   CHECK_THAT(resolved, Catch::Contains("gamma:"));
+  // Offsets are written where a sphere has one, left out where it is 0.
+  CHECK_THAT(resolved, Catch::Contains("- [0, 0.5, 0.02]\n"));
+  CHECK_THAT(resolved, Catch::Contains("- [0.6, 0.45]\n"));
+  CHECK_THAT(resolved, Catch::Contains("- [1.2, 0.4, -0.03]\n"));
 }
 
 TEST_CASE("a stepped rod of one step is the RnT preset", "[scenario]") {
@@ -567,4 +576,33 @@ TEST_CASE("an RnT whose thin part lies off its axis is warned about at a large d
   CHECK(load_scenario_text(rnt(", thin_offset: 0.05", "run: {dt: 1.25e-5}\n"), "o.yaml")
             .diagnostics.empty());
   CHECK(load_scenario_text(rnt(", thin_offset: 0", ""), "o.yaml").diagnostics.empty());
+}
+
+TEST_CASE("explicit spheres carry their offsets from the axis into the rod", "[scenario]") {
+  // The RnT preset with its thin part off the axis, written out sphere by sphere, is that rod.
+  const engine::RodProfile profile = engine::preset_rnt_profile(0.3, 1.75, 0.55, 0.05);
+  std::string list;
+  char number[96];
+  for (const engine::Sphere& sphere : profile.spheres) {
+    std::snprintf(number, sizeof number, "[%.17g, %.17g, %.17g]", sphere.axial, sphere.radius,
+                  sphere.lateral);
+    list += (list.empty() ? "" : ", ") + std::string(number);
+  }
+  const Scenario preset = load_ok(
+      "species: [{name: R, shape: {preset: RnT, thin_offset: 0.05}, count: 2}]\n"
+      "run: {dt: 1.25e-5}\n");
+  const Scenario spheres =
+      load_ok("species: [{name: R, shape: {spheres: [" + list + "]}, count: 2}]\n");
+  const engine::RodShape& a = preset.model.species[0].shape;
+  const engine::RodShape& b = spheres.model.species[0].shape;
+  CHECK(b.mass == a.mass);
+  CHECK(b.inertia_axial == a.inertia_axial);
+  CHECK(b.inertia_normal == a.inertia_normal);
+  CHECK(b.axis_lean == a.axis_lean);
+  CHECK(b.axis_lean > 0.02);  // the offset of 0.05 mm leans the axis (docs/model.md)
+  CHECK(b.max_lateral == a.max_lateral);
+  // Left out, the offset is 0: the same list without it is the straight preset.
+  const Scenario straight = load_ok(
+      "species: [{name: R, shape: {spheres: [[0, 0.55], [1, 0.55, 0], [2, 0.3]]}, count: 2}]\n");
+  CHECK(engine::is_straight(straight.model.species[0].shape.spheres));
 }
