@@ -396,6 +396,14 @@ RodProfile preset_rnt_profile(double thin_radius, double step, double thick_radi
   return profile;
 }
 
+void bend_profile(RodProfile& profile, double length, double sagitta, BendForm form) {
+  for (Sphere& sphere : profile.spheres) {
+    const double u = 2.0 * sphere.axial / length - 1.0;  // -1 at the thick tip, +1 at the thin
+    sphere.lateral +=
+        sagitta * (form == BendForm::arc ? 1.0 - u * u : std::sin(kPi * u));
+  }
+}
+
 bool is_straight(const std::vector<Sphere>& spheres) {
   return std::all_of(spheres.begin(), spheres.end(),
                      [](const Sphere& sphere) { return sphere.lateral == 0.0; });

@@ -37,6 +37,14 @@ RodProfile preset_a_profile();
 /// `thin_offset`: the thin part's axis lies that far from the thick part's, parallel to it [mm].
 RodProfile preset_rnt_profile(double thin_radius = kRntThinRadius, double step = kRntLength / 2,
                               double thick_radius = kRntThickRadius, double thin_offset = 0.0);
+/// How a rod is bent in the plane of its offsets, `sagitta` being the largest offset from the
+/// straight axis through its tips: `arc`, the centres on a parabola through the tips, bulging by
+/// the sagitta at mid-length; `s`, one sine wave along the rod, its thick half to one side and its
+/// thin half to the other, the tips and mid-length on the straight axis.
+enum class BendForm { arc, s };
+/// Adds the bend to every sphere's lateral offset, at its axial position measured from the thick
+/// tip of a rod `length` long [mm].
+void bend_profile(RodProfile& profile, double length, double sagitta, BendForm form);
 /// A rod of cylinders in steps, thick end first, `length` tip to tip [mm]: section i has radius
 /// radii[i] and begins at steps[i - 1] from the thick tip (the first at the tip); one fewer step
 /// than radii, the steps growing, the radii not. Each section is built as the RnT preset's two

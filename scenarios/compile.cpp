@@ -142,6 +142,11 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
           return std::nullopt;
         }
         engine::RodProfile profile = engine::preset_rnt_profile(thin, step, thick, offset);
+        if (shape.bend.value > 0.0) {
+          engine::bend_profile(profile, engine::kRntLength, shape.bend.value,
+                               shape.bend_form.value == "s" ? engine::BendForm::s
+                                                            : engine::BendForm::arc);
+        }
         // As many spheres as an explicit list or a taper may have: a very thin part would take
         // thousands, and the mass properties of a union cost the square of its spheres' count.
         constexpr std::size_t kMaxSpheres = 200;
@@ -261,7 +266,9 @@ void check_fits_gap(const engine::RodShape& shape, const SpeciesSpec& species,
                           "); the gap must exceed the rod's thickness");
   } else if (const double rolled = thickness_at_any_roll(shape); rolled >= gap) {
     // Placement draws the roll of a rod with off-axis spheres at random.
-    diagnostics.error(species.shape.where, species.shape.path,
+    const bool bent = species.shape.bend.value > 0.0;
+    diagnostics.error(bent ? species.shape.bend.where : species.shape.where,
+                      bent ? species.shape.bend.path : species.shape.path,
                       "the rod is " + mm(std::ceil(rolled * 1e4) / 1e4) +
                           " thick when rolled about its axis so that its off-axis spheres lie "
                           "above one another, which does not fit in the gap of " +

@@ -80,6 +80,10 @@ void write_shape(Writer& w, const ShapeSpec& shape) {
         w.key("thin_radius").number(shape.thin_radius.value);
         w.key("step").number(shape.step.value);
         if (shape.thin_offset.value != 0.0) w.key("thin_offset").number(shape.thin_offset.value);
+        if (shape.bend.value != 0.0) {
+          w.key("bend").number(shape.bend.value);
+          w.key("bend_form").word(shape.bend_form.value);
+        }
       }
       break;
     case ShapeSpec::Kind::taper:

@@ -30,6 +30,8 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
   out.thin_radius = shape.real("thin_radius");
   out.step = shape.real("step");
   out.thin_offset = shape.real("thin_offset");
+  out.bend = shape.real("bend");
+  out.bend_form = shape.choice("bend_form");
   if (has_taper) {
     out.kind = ShapeSpec::Kind::taper;
     SectionReader taper = shape.section("taper");
@@ -70,9 +72,11 @@ ShapeSpec read_shape(SectionReader shape, Diagnostics& diagnostics) {
     diagnostics.error(shape.location_of("step"), shape.path_of("step"),
                       "applies to `preset: RnT` only");
   }
-  if (shape.has("thin_offset") && !rnt) {
-    diagnostics.error(shape.location_of("thin_offset"), shape.path_of("thin_offset"),
-                      "applies to `preset: RnT` only");
+  for (const char* key : {"thin_offset", "bend", "bend_form"}) {
+    if (shape.has(key) && !rnt) {
+      diagnostics.error(shape.location_of(key), shape.path_of(key),
+                        "applies to `preset: RnT` only");
+    }
   }
   return out;
 }

@@ -26,6 +26,8 @@ struct ShapeSpec {
   Sourced<double> thin_radius;         ///< RnT's thin part [mm]
   Sourced<double> step;                ///< RnT's step, from the thick tip [mm]
   Sourced<double> thin_offset;         ///< RnT's thin axis from the thick one's [mm]
+  Sourced<double> bend;                ///< RnT's largest offset from the line of its tips [mm]
+  Sourced<std::string> bend_form;      ///< "arc" or "s"
   Sourced<double> taper_length;        ///< tip to tip [mm]
   Sourced<double> taper_thick_radius;  ///< [mm]
   Sourced<double> taper_thin_radius;   ///< [mm]

@@ -125,6 +125,14 @@ std::vector<KeyInfo> scenario_keys() {
        "only): 0, the paper's straight rod, by default. At most thick_radius - thin_radius, so "
        "that the rod stays thick_radius wide. An offset breaks the rod's mirror symmetry about "
        "its axis (docs/model.md, \"An RnT whose thin part is off its axis\")."},
+      {"species[].shape.bend", V::real, "mm", "0", closed(0, 0.5), {},
+       "How far the RnT preset is bent in the plane of its roll, its largest offset from the "
+       "straight line through its tips (RnT only): 0, the paper's straight rod, by default. The "
+       "rod must fit in the gap at every roll (docs/model.md, \"A bent RnT\")."},
+      {"species[].shape.bend_form", V::choice, "", "arc", {}, {"arc", "s"},
+       "The form of the bend (RnT only): `arc`, bulging by `bend` at mid-length, the tips on the "
+       "straight line; `s`, one sine wave, the thick half to one side and the thin half to the "
+       "other by `bend`, the tips and mid-length on the line."},
       {"species[].shape.taper", V::section, "", "", {}, {},
        "A linear taper: spheres with radii linear from the thick to the thin end."},
       {"species[].shape.taper.length", V::real, "mm", "", positive(), {},

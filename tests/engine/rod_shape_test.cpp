@@ -402,3 +402,32 @@ TEST_CASE("a rod in two steps meets each step and keeps its length", "[rod_shape
   CHECK_THROWS_AS(stepped_profile(4.5, radii, {1.5}), std::invalid_argument);
   CHECK_THROWS_AS(stepped_profile(4.5, radii, {3.0, 1.5}), std::invalid_argument);
 }
+
+TEST_CASE("a bent RnT: an arc through its tips, or one sine wave", "[rod_shape]") {
+  const RodProfile straight = preset_rnt_profile();
+  RodProfile arc = straight;
+  bend_profile(arc, kRntLength, 0.1, BendForm::arc);
+  RodProfile s = straight;
+  bend_profile(s, kRntLength, 0.1, BendForm::s);
+  REQUIRE(arc.spheres.size() == straight.spheres.size());
+  for (std::size_t k = 0; k < straight.spheres.size(); ++k) {
+    const double a = straight.spheres[k].axial;  // from the thick tip
+    CHECK(arc.spheres[k].axial == a);
+    CHECK(arc.spheres[k].radius == straight.spheres[k].radius);
+    // The parabola through the tips (0 and 3.5 mm) with its vertex 0.1 mm off at mid-length.
+    CHECK(arc.spheres[k].lateral == Approx(0.1 * a * (3.5 - a) / (1.75 * 1.75)).margin(1e-15));
+    CHECK(s.spheres[k].lateral == Approx(-0.1 * std::sin(kPi * a / 1.75)).margin(1e-15));
+  }
+  // The thin part's first sphere is centred on the step at mid-length: the arc's vertex, the
+  // wave's node. The thick half lies to one side of the wave, the thin half to the other.
+  CHECK(arc.spheres[3].axial == 1.75);
+  CHECK(arc.spheres[3].lateral == Approx(0.1));
+  CHECK(std::abs(s.spheres[3].lateral) < 1e-15);
+  CHECK(s.spheres[1].lateral < -0.09);
+  CHECK(s.spheres[6].lateral > 0.09);
+  // Added to an offset already there.
+  RodProfile both = preset_rnt_profile(kRntThinRadius, kRntLength / 2, kRntThickRadius, 0.02);
+  bend_profile(both, kRntLength, 0.1, BendForm::arc);
+  CHECK(both.spheres[5].lateral == Approx(arc.spheres[5].lateral + 0.02));
+  CHECK(both.spheres[0].lateral == arc.spheres[0].lateral);
+}
