@@ -201,6 +201,22 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
         }
         profile.spheres.push_back({axial, radius, lateral});
       }
+      // The mass properties of a rod with offsets are integrated on a fixed number of lines
+      // across it (engine/rod_shape.cpp), accurate while the offsets stay within its thickness.
+      double low = 0.0, high = 0.0, widest = 0.0;
+      for (const engine::Sphere& sphere : profile.spheres) {
+        low = std::min(low, sphere.lateral);
+        high = std::max(high, sphere.lateral);
+        widest = std::max(widest, 2.0 * sphere.radius);
+      }
+      if (high - low > widest) {
+        diagnostics.error(shape.spheres.where, shape.spheres.path,
+                          "the offsets from the axis span " + mm(high - low) +
+                              ", more than the thickest sphere's diameter (" + mm(widest) +
+                              "); expected a rod along its axis, bent by less than its "
+                              "thickness (give the axial positions along the rod)");
+        return std::nullopt;
+      }
       return profile;
     }
   }

@@ -161,8 +161,9 @@ std::vector<KeyInfo> scenario_keys() {
        "Explicit spheres [axial position, radius], the axial position growing from the thick to "
        "the thin end (any origin), each with an optional third number, its centre's offset from "
        "the axis in the rod's plane (0 when left out), for a bent rod: [axial, radius, lateral]. "
-       "The rod must fit in the gap at every roll about its axis, which placement draws at random "
-       "for a rod with offsets (docs/model.md, \"A bent RnT\").",
+       "The offsets may span at most the thickest sphere's diameter, and the rod must fit in the "
+       "gap at every roll about its axis, which placement draws at random for a rod with offsets "
+       "(docs/model.md, \"A bent RnT\").",
        "none"},
       {"species[].density", V::real, "g/mm^3", "8.5e-3", closed(1.0e-6, 0.03), {},
        "Density of the rod's material (brass). From air's (1.2e-6) to beyond osmium's (0.0226), "
