@@ -396,6 +396,21 @@ void warn_unconverged_offset(const SpeciesSpec& species, double dt, Diagnostics&
           "its gait with rodsort single at run.dt = 1.25e-5 s");
 }
 
+/// A bent RnT changes its gait with dt (docs/model.md, "A bent RnT"): an arc of 0.1 mm circles at
+/// 0.20 rad/s at dt = 1e-4 s and at 4.1 rad/s at 2.5e-5 s.
+void warn_unconverged_bend(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
+  constexpr double kSmallestCheckedDt = 1.25e-5;  // [s], as for the off-axis thin part
+  const Sourced<double>& bend = species.shape.bend;
+  if (!is_rnt_preset(species) || !(bend.value > 0.0) || dt <= kSmallestCheckedDt * (1.0 + 1e-9)) {
+    return;
+  }
+  diagnostics.warning(bend.where, bend.path,
+                      "a bent RnT may change its gait with run.dt = " + format_real(dt) +
+                          " s (docs/model.md, \"A bent RnT\": an arc of 0.1 mm circles at "
+                          "0.20 rad/s at 1e-4 s and at 4.1 rad/s at 2.5e-5 s); check its gait "
+                          "with rodsort single at run.dt = 1.25e-5 s");
+}
+
 /// With the split impulse's turns applied in full, an RnT rod at dt = 1e-4 or 2.5e-5 s is locked in
 /// its slow glide, about half the speed of its run (5.1 against 10.2 mm/s alone at 1e-4 s); only at
 /// 1.25e-5 s does it run again (docs/model.md, "Checks while a run goes"). Rod A is not affected.
@@ -651,6 +666,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
     warn_unconverged_kick(species, model.dt, diagnostics);
     warn_unconverged_step(species, model.dt, diagnostics);
     warn_unconverged_offset(species, model.dt, diagnostics);
+    warn_unconverged_bend(species, model.dt, diagnostics);
     engine::Species out;
     out.name = species.name.value;
     out.shape = shapes[i];

@@ -223,9 +223,8 @@ TEST_CASE("the resolved scenario reads back to the same model", "[scenario][reso
       "     material: steel, fraction: 0.5}\n"
       "  - {name: C, shape: {spheres: [[0, 0.5], [0.6, 0.45], [1.2, 0.4], [1.8, 0.3]]},\n"
       "     count: 3, initial: {region: inside_trap, heading: toward_apex}}\n"
-      "  - {name: D, shape: {preset: RnT, thin_radius: 0.25, step: 2.2, bend: 0.05, bend_form: s},\n"
-      "     count: 4,\n"
-      "     initial: {region: outside_trap, heading: 45}}\n"
+      "  - {name: D, shape: {preset: RnT, thin_radius: 0.25, step: 2.2, bend: 0.05,\n"
+      "     bend_form: s}, count: 4, initial: {region: outside_trap, heading: 45}}\n"
       "  - {name: E, shape: {stepped: {length: 4.5, radii: [0.55, 0.4, 0.25], steps: [1.5, 3]}},\n"
       "     count: 2}\n"
       "  - {name: F, shape: {spheres: [[0, 0.5, 0.02], [0.6, 0.45], [1.2, 0.4, -0.03]]},\n"
@@ -560,7 +559,8 @@ TEST_CASE("output.rods_format chooses rods.csv, rods.h5 or both", "[scenario][ou
   CHECK(reread.diagnostics.empty());
 }
 
-TEST_CASE("an RnT whose thin part lies off its axis is warned about at a large dt", "[scenario]") {
+TEST_CASE("an RnT whose thin part lies off its axis, or bent, is warned about at a large dt",
+          "[scenario]") {
   const auto rnt = [](const std::string& shape, const std::string& run) {
     return "species: [{name: R, shape: {preset: RnT" + shape +
            "}, count: 10, noise: {kick_eps: 0}}]\n" + run;
@@ -577,6 +577,16 @@ TEST_CASE("an RnT whose thin part lies off its axis is warned about at a large d
   CHECK(load_scenario_text(rnt(", thin_offset: 0.05", "run: {dt: 1.25e-5}\n"), "o.yaml")
             .diagnostics.empty());
   CHECK(load_scenario_text(rnt(", thin_offset: 0", ""), "o.yaml").diagnostics.empty());
+  // So is a bent one.
+  const LoadResult bent = load_scenario_text(rnt(", bend: 0.1, bend_form: s", ""), "b.yaml");
+  REQUIRE(bent.ok());
+  REQUIRE(bent.diagnostics.size() == 1);
+  CHECK_THAT(bent.diagnostics[0].to_string(),
+             Catch::Contains("b.yaml:1:48: warning: species[0].shape.bend: a bent RnT may change "
+                             "its gait with run.dt = 1e-4 s"));
+  CHECK(
+      load_scenario_text(rnt(", bend: 0.1", "run: {dt: 1.25e-5}\n"), "b.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(rnt(", bend: 0", ""), "b.yaml").diagnostics.empty());
 }
 
 TEST_CASE("explicit spheres carry their offsets from the axis into the rod", "[scenario]") {
