@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "engine/units.hpp"
@@ -258,17 +259,15 @@ void check_roughness(const ScenarioSpec& spec, const engine::Model& model,
   }
 }
 
-/// How thick a rod is at its thickest roll about its axis: a straight rod's diameter; for one with
-/// spheres off its axis, the most that two spheres span when the plane of their offsets stands
-/// upright, max over i, j of |lateral_i - lateral_j| + r_i + r_j.
+/// How thick a rod is at its thickest roll about its axis: its width in the plane of its offsets,
+/// which stands upright at some roll (a straight rod's diameter).
 double thickness_at_any_roll(const engine::RodShape& shape) {
-  double thickest = 0.0;
-  for (const engine::Sphere& a : shape.spheres) {
-    for (const engine::Sphere& b : shape.spheres) {
-      thickest = std::max(thickest, std::abs(a.lateral - b.lateral) + a.radius + b.radius);
-    }
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const engine::Sphere& sphere : shape.spheres) {
+    low = std::min(low, sphere.lateral - sphere.radius);
+    high = std::max(high, sphere.lateral + sphere.radius);
   }
-  return thickest;
+  return high - low;
 }
 
 void check_fits_gap(const engine::RodShape& shape, const SpeciesSpec& species,
