@@ -377,37 +377,28 @@ void warn_unconverged_step(const SpeciesSpec& species, double dt, Diagnostics& d
                           "1.25e-5 s); check its gait with rodsort single at run.dt = 1.25e-5 s");
 }
 
-/// An RnT whose thin part lies off its axis changes its gait with dt (docs/model.md, "An RnT whose
-/// thin part is off its axis"): at an offset of 0.05 mm it circles at dt = 1e-4 s and its heading
-/// diffuses from 2.5e-5 s on; at 0.1 mm its turn rate falls from 0.61 to 0.24 rad/s by 1.25e-5 s.
-void warn_unconverged_offset(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
+/// An RnT whose thin part lies off its axis, or that is bent, changes its gait with dt
+/// (docs/model.md, "An RnT whose thin part is off its axis" and "A bent RnT"): at an offset of
+/// 0.05 mm it circles at dt = 1e-4 s and its heading diffuses from 2.5e-5 s on; at 0.1 mm its turn
+/// rate falls from 0.61 to 0.24 rad/s by 1.25e-5 s; an arc of 0.1 mm circles at 0.20 rad/s at
+/// 1e-4 s and at 4.1 rad/s at 2.5e-5 s. Each key that is set is warned of above 1.25e-5 s.
+void warn_unconverged_off_axis(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
   constexpr double kSmallestStudiedDt = 1.25e-5;  // [s]
-  const Sourced<double>& offset = species.shape.thin_offset;
-  if (!is_rnt_preset(species) || !(offset.value > 0.0) || dt <= kSmallestStudiedDt * (1.0 + 1e-9)) {
-    return;
-  }
-  diagnostics.warning(
-      offset.where, offset.path,
-      "an RnT whose thin part lies off its axis may change its gait with run.dt = " +
-          format_real(dt) +
-          " s (docs/model.md, \"An RnT whose thin part is off its axis\": at "
-          "0.05 mm it circles at 1e-4 s and turns at random from 2.5e-5 s); check "
-          "its gait with rodsort single at run.dt = 1.25e-5 s");
-}
-
-/// A bent RnT changes its gait with dt (docs/model.md, "A bent RnT"): an arc of 0.1 mm circles at
-/// 0.20 rad/s at dt = 1e-4 s and at 4.1 rad/s at 2.5e-5 s.
-void warn_unconverged_bend(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
-  constexpr double kSmallestCheckedDt = 1.25e-5;  // [s], as for the off-axis thin part
-  const Sourced<double>& bend = species.shape.bend;
-  if (!is_rnt_preset(species) || !(bend.value > 0.0) || dt <= kSmallestCheckedDt * (1.0 + 1e-9)) {
-    return;
-  }
-  diagnostics.warning(bend.where, bend.path,
-                      "a bent RnT may change its gait with run.dt = " + format_real(dt) +
-                          " s (docs/model.md, \"A bent RnT\": an arc of 0.1 mm circles at "
-                          "0.20 rad/s at 1e-4 s and at 4.1 rad/s at 2.5e-5 s); check its gait "
-                          "with rodsort single at run.dt = 1.25e-5 s");
+  if (!is_rnt_preset(species) || dt <= kSmallestStudiedDt * (1.0 + 1e-9)) return;
+  const std::string check = "); check its gait with rodsort single at run.dt = 1.25e-5 s";
+  const auto warn = [&](const Sourced<double>& key, const std::string& what,
+                        const std::string& evidence) {
+    if (!(key.value > 0.0)) return;
+    diagnostics.warning(key.where, key.path,
+                        what + " may change its gait with run.dt = " + format_real(dt) +
+                            " s (docs/model.md, " + evidence + check);
+  };
+  warn(species.shape.thin_offset, "an RnT whose thin part lies off its axis",
+       "\"An RnT whose thin part is off its axis\": at 0.05 mm it circles at 1e-4 s and turns at "
+       "random from 2.5e-5 s");
+  warn(species.shape.bend, "a bent RnT",
+       "\"A bent RnT\": an arc of 0.1 mm circles at 0.20 rad/s at 1e-4 s and at 4.1 rad/s at "
+       "2.5e-5 s");
 }
 
 /// With the split impulse's turns applied in full, an RnT rod at dt = 1e-4 or 2.5e-5 s is locked in
@@ -664,8 +655,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
     const SpeciesSpec& species = spec.species[i];
     warn_unconverged_kick(species, model.dt, diagnostics);
     warn_unconverged_step(species, model.dt, diagnostics);
-    warn_unconverged_offset(species, model.dt, diagnostics);
-    warn_unconverged_bend(species, model.dt, diagnostics);
+    warn_unconverged_off_axis(species, model.dt, diagnostics);
     engine::Species out;
     out.name = species.name.value;
     out.shape = shapes[i];
