@@ -217,7 +217,11 @@ std::vector<KeyInfo> scenario_keys() {
       {"materials.*.friction", V::real, "", "", non_negative(), {}, "Coulomb friction coefficient.",
        "the pair's default"},
       {"materials.*.restitution", V::real, "", "", closed(0, 1), {},
-       "Normal coefficient of restitution.", "the pair's default"},
+       "Normal coefficient of restitution. With a rod's restitution above 0.65 against both the "
+       "base and the lid, rods rattle between the plates and their gait changes with run.dt; "
+       "validate warns above run.dt = 1.25e-5 s (docs/model.md, \"Restitution of base and lid "
+       "together\").",
+       "the pair's default"},
 
       {"run", V::section, "", "", {}, {}, "Length and time step of the simulation."},
       {"run.duration", V::real, "s", "300", positive(), {}, "Simulated time."},

@@ -589,6 +589,31 @@ TEST_CASE("an RnT whose thin part lies off its axis, or bent, is warned about at
   CHECK(load_scenario_text(rnt(", bend: 0", ""), "b.yaml").diagnostics.empty());
 }
 
+TEST_CASE("restitutions of base and lid both above 0.65 are warned about at a large dt",
+          "[scenario]") {
+  const std::string rods = "species: [{name: A, count: 10}]\n";
+  const auto lively = [&](const std::string& base, const std::string& lid, const std::string& run) {
+    return rods + "materials:\n  rod-base: {restitution: " + base +
+           "}\n  rod-lid: {restitution: " + lid + "}\n" + run;
+  };
+  const LoadResult coarse = load_scenario_text(lively("0.8", "0.7", ""), "e.yaml");
+  REQUIRE(coarse.ok());
+  REQUIRE(coarse.diagnostics.size() == 1);
+  CHECK(coarse.diagnostics[0].severity == Severity::warning);
+  // Named at the last plate pair given, the lid's.
+  CHECK_THAT(coarse.diagnostics[0].to_string(),
+             Catch::Contains("e.yaml:4:26: warning: materials.rod-lid.restitution: restitutions "
+                             "of 0.8 with the base and 0.7 with the lid (rod material rod) make "
+                             "rods rattle between the plates, and their gait changes with "
+                             "run.dt = 1e-4 s"));
+  // At 1.25e-5 s, at 0.65, or with one plate alone lively, nothing is said.
+  CHECK(load_scenario_text(lively("0.8", "0.7", "run: {dt: 1.25e-5}\n"), "e.yaml")
+            .diagnostics.empty());
+  CHECK(load_scenario_text(lively("0.65", "0.65", ""), "e.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(lively("0.9", "0.1", ""), "e.yaml").diagnostics.empty());
+  CHECK(load_scenario_text(lively("0.1", "0.9", ""), "e.yaml").diagnostics.empty());
+}
+
 TEST_CASE("explicit spheres carry their offsets from the axis into the rod", "[scenario]") {
   // The RnT preset with its thin part off the axis, written out sphere by sphere, is that rod.
   const engine::RodProfile profile = engine::preset_rnt_profile(0.3, 1.75, 0.55, 0.05);
