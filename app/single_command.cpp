@@ -43,6 +43,12 @@ Command add_single_command(CLI::App& app) {
                    "A window runs when V_x exceeds this [mm/s] (default: half the 90th "
                    "percentile of V_x)")
       ->check(non_negative_number());
+  single
+      ->add_option("--dt-halvings", request->dt_halvings,
+                   "Also run the study at dt/2, dt/4, ... (this many halvings), each under "
+                   "OUTPUT/dt-<dt>, and say whether the finest two agree")
+      ->check(CLI::Range(0, 6))
+      ->capture_default_str();
   single->add_option("-o,--output", request->output,
                      "Directory for summary.csv, per_rod.csv, axial_velocity.csv, lags.csv");
   return {single,

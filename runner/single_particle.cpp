@@ -141,10 +141,17 @@ CsvTable roll_windows_table(const std::vector<RodResult>& rods, int window_sampl
   }
   return table;
 }
-}  // namespace
 
-int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
-                        std::ostream& err) {
+/// What the dt comparison reads of one study.
+struct StudyNumbers {
+  double dt = 0.0;
+  double v0 = 0.0, v0_sem = 0.0;
+  double diffusion = 0.0, diffusion_sem = 0.0;
+  double running = 0.0, backward = 0.0;
+};
+
+int run_study(const SingleParticleRequest& request, std::ostream& out, std::ostream& err,
+              StudyNumbers& numbers) {
   const scenarios::LoadResult loaded =
       scenarios::load_scenario_with_options(request.scenario, request.set_options);
   err << scenarios::format_diagnostics(loaded.diagnostics);
@@ -300,6 +307,13 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
   const metrics::TwoPeaks peaks = metrics::two_peaks(bin_centre, density);
   const double measured = request.duration * request.rods;
   const double thin_end_down = metrics::thin_end_down_fraction(tracks);
+  numbers = {model.dt,
+             speed.mean,
+             speed.standard_error,
+             diffusion.mean,
+             diffusion.standard_error,
+             runs.running_fraction,
+             backward};
 
   char line[512];
   out << "species " << species_name << ": " << request.rods << " rods x " << request.duration
@@ -479,6 +493,91 @@ int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
                                 number(lags.orientation_correlation[l])});
     }
     write_file_atomically(request.output / "lags.csv", csv_text(lag_table));
+  } catch (const std::exception& error) {
+    err << "rodsort: error: " << error.what() << '\n';
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
+/// Whether two studies at successive steps agree: v0 within 5% or three standard errors (at least
+/// 0.1 mm/s), the shares of running and backward windows within 0.05, D_r within 25% or three
+/// standard errors (at least 0.005 rad^2/s). Returns what moved, empty when nothing did.
+std::string what_moved(const StudyNumbers& coarse, const StudyNumbers& fine) {
+  char text[160];
+  std::string moved;
+  const auto add = [&](const char* format, double a, double b) {
+    std::snprintf(text, sizeof text, format, a, b);
+    moved += (moved.empty() ? "" : "; ") + std::string(text);
+  };
+  const double v0_tolerance =
+      std::max({0.05 * std::abs(fine.v0), 3.0 * std::hypot(coarse.v0_sem, fine.v0_sem), 0.1});
+  if (std::abs(fine.v0 - coarse.v0) > v0_tolerance) add("v0 %.3g -> %.3g mm/s", coarse.v0, fine.v0);
+  const double diffusion_tolerance =
+      std::max({0.25 * std::abs(fine.diffusion),
+                3.0 * std::hypot(coarse.diffusion_sem, fine.diffusion_sem), 0.005});
+  if (std::abs(fine.diffusion - coarse.diffusion) > diffusion_tolerance) {
+    add("D_r %.3g -> %.3g rad^2/s", coarse.diffusion, fine.diffusion);
+  }
+  if (std::abs(fine.running - coarse.running) > 0.05) {
+    add("running %.3f -> %.3f of windows", coarse.running, fine.running);
+  }
+  if (std::abs(fine.backward - coarse.backward) > 0.05) {
+    add("backward %.3f -> %.3f of windows", coarse.backward, fine.backward);
+  }
+  return moved;
+}
+
+}  // namespace
+
+int run_single_particle(const SingleParticleRequest& request, std::ostream& out,
+                        std::ostream& err) {
+  StudyNumbers numbers;
+  if (request.dt_halvings <= 0) return run_study(request, out, err, numbers);
+  const scenarios::LoadResult loaded =
+      scenarios::load_scenario_with_options(request.scenario, request.set_options);
+  if (!loaded.ok()) {
+    err << scenarios::format_diagnostics(loaded.diagnostics);
+    return kExitUsage;
+  }
+  const double dt = loaded.scenario->model.dt;
+  std::vector<StudyNumbers> studies;
+  for (int halving = 0; halving <= request.dt_halvings; ++halving) {
+    SingleParticleRequest step = request;
+    step.dt_halvings = 0;
+    const std::string step_dt = number(dt / std::ldexp(1.0, halving));
+    step.set_options.push_back("run.dt=" + step_dt);
+    if (!request.output.empty()) step.output = request.output / ("dt-" + step_dt);
+    out << "at run.dt = " << step_dt << " s:\n";
+    const int status = run_study(step, out, err, numbers);
+    if (status != kExitOk) return status;
+    studies.push_back(numbers);
+  }
+  char line[256];
+  out << "\nrun.dt [s]   v0 [mm/s]          D_r [rad^2/s]        running  backward\n";
+  CsvTable table;
+  table.header = {"dt_s",          "v0_mm_s",          "v0_sem_mm_s",      "Dr_rad2_s",
+                  "Dr_sem_rad2_s", "running_fraction", "backward_fraction"};
+  for (const StudyNumbers& study : studies) {
+    std::snprintf(line, sizeof line, "%-11s  %8.3f +- %-6.3f  %8.4f +- %-7.4f  %7.3f  %8.3f\n",
+                  number(study.dt).c_str(), study.v0, study.v0_sem, study.diffusion,
+                  study.diffusion_sem, study.running, study.backward);
+    out << line;
+    table.rows.push_back({number(study.dt), number(study.v0), number(study.v0_sem),
+                          number(study.diffusion), number(study.diffusion_sem),
+                          number(study.running), number(study.backward)});
+  }
+  const StudyNumbers& coarse = studies[studies.size() - 2];
+  const StudyNumbers& fine = studies.back();
+  const std::string moved = what_moved(coarse, fine);
+  out << (moved.empty() ? "settled" : "not settled") << " between run.dt = " << number(coarse.dt)
+      << " and " << number(fine.dt) << " s"
+      << (moved.empty() ? " (v0 within 5%, D_r within 25%, running and backward within 0.05)"
+                        : ": " + moved)
+      << "\n";
+  if (request.output.empty()) return kExitOk;
+  try {
+    write_file_atomically(request.output / "dt_convergence.csv", csv_text(table));
   } catch (const std::exception& error) {
     err << "rodsort: error: " << error.what() << '\n';
     return kExitFailure;

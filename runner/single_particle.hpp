@@ -26,10 +26,14 @@ struct SingleParticleRequest {
   double cell = 30.0;                    ///< side of each rod's periodic cell [mm]
   double run_threshold = -1.0;           ///< [mm/s]; negative: half the 90th percentile of V_x
   std::filesystem::path output;          ///< directory for the CSV files; empty: print only
+  /// Also repeat the study at dt / 2, dt / 4, ... (this many halvings), each under
+  /// output/dt-<dt>, and say whether the finest two agree (a check of the gait's convergence).
+  int dt_halvings = 0;
 };
 
 /// Runs the study, prints its summary on `out` and progress on `err`, writes the files when an
-/// output directory is given. Returns an exit status (runner/exit_code.hpp).
+/// output directory is given; with dt_halvings, runs it at each step and then compares them.
+/// Returns an exit status (runner/exit_code.hpp).
 int run_single_particle(const SingleParticleRequest& request, std::ostream& out, std::ostream& err);
 
 }  // namespace rodsort::runner

@@ -144,9 +144,9 @@ std::optional<engine::RodProfile> build_profile(const ShapeSpec& shape, Diagnost
         }
         engine::RodProfile profile = engine::preset_rnt_profile(thin, step, thick, offset);
         if (shape.bend.value > 0.0) {
-          engine::bend_profile(profile, engine::kRntLength, shape.bend.value,
-                               shape.bend_form.value == "s" ? engine::BendForm::s
-                                                            : engine::BendForm::arc);
+          engine::bend_profile(
+              profile, engine::kRntLength, shape.bend.value,
+              shape.bend_form.value == "s" ? engine::BendForm::s : engine::BendForm::arc);
         }
         // As many spheres as an explicit list or a taper may have: a very thin part would take
         // thousands, and the mass properties of a union cost the square of its spheres' count.
@@ -431,15 +431,17 @@ void warn_lively_plates(const ScenarioSpec& spec, const engine::MaterialTable& m
     }
     const SourceLocation where = given ? given->restitution->where : spec.dt.where;
     const std::string path = given ? given->restitution->path : spec.dt.path;
-    diagnostics.warning(where, path,
-                        "restitutions of " + format_real(base) + " with the base and " +
-                            format_real(lid) + " with the lid (rod material " + rod +
-                            ") make rods rattle between the plates, and their gait changes with "
-                            "run.dt = " +
-                            format_real(spec.dt.value) +
-                            " s (docs/model.md, \"Restitution of base and lid together\": at 0.8 "
-                            "rod A's v0 is -11.1 mm/s at 1e-4 s and 9.8 at 1.25e-5 s); check the "
-                            "gait with rodsort single at run.dt = 1.25e-5 s and below");
+    diagnostics.warning(
+        where, path,
+        "restitutions of " + format_real(base) + " with the base and " + format_real(lid) +
+            " with the lid (rod material " + rod +
+            ") make rods rattle between the plates, and their gait changes with "
+            "run.dt = " +
+            format_real(spec.dt.value) +
+            " s (docs/model.md, \"Restitution of base and lid together\": at 0.8 "
+            "rod A's v0 is -11.1 mm/s at 1e-4 s and 9.8 at 1.25e-5 s); check the "
+            "gait with rodsort single --dt-halvings, down to run.dt = 1.25e-5 s and "
+            "below");
   }
 }
 

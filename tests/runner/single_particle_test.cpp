@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "rodsort_program.hpp"
 #include "runner/csv_table.hpp"
@@ -209,6 +210,68 @@ TEST_CASE(
   CHECK(up == 1);
   const CsvTable windows = read_csv(out / "roll_windows.csv");
   CHECK(windows.rows.size() == 4 * 142);
+}
+
+// docs/model.md, "Restitution of base and lid together": with restitutions of 0.8 against base and
+// lid, rod A at dt = 1e-4 s goes backward at about 11 mm/s and at 5e-5 s forward at about 2
+// (16 rods x 40 s each); without noise at the default restitutions its gait holds from 5e-5 to
+// 2.5e-5 s. Six rods x 4 s per step, about 2 CPU-s in all.
+TEST_CASE(
+    "rodsort single --dt-halvings repeats the study at smaller steps and says whether they "
+    "agree",
+    "[runner][single]") {
+  TempDirectory scratch;
+  const std::vector<std::string> lively = {"single",     kSingleRods,
+                                           "--species",  "A",
+                                           "--rods",     "6",
+                                           "--duration", "4",
+                                           "--warmup",   "1",
+                                           "--set",      "materials.rod-base.restitution=0.8",
+                                           "--set",      "materials.rod-lid.restitution=0.8"};
+  auto halved = lively;
+  halved.insert(halved.end(), {"--dt-halvings", "1", "-o", (scratch / "lively").string()});
+  const auto result = run_rodsort(halved, scratch.path());
+  INFO(result.err);
+  REQUIRE(result.status == kExitOk);
+  CHECK_THAT(result.out, Catch::Contains("at run.dt = 1e-4 s:") &&
+                             Catch::Contains("at run.dt = 5e-5 s:") &&
+                             Catch::Contains("not settled between run.dt = 1e-4 and 5e-5 s: v0 "));
+  const CsvTable table = read_csv(scratch / "lively" / "dt_convergence.csv");
+  REQUIRE(table.rows.size() == 2);
+  CHECK(table.rows[0][0] == "1e-4");
+  CHECK(table.rows[1][0] == "5e-5");
+  const auto v0 = table.numbers(*table.column("v0_mm_s"));
+  CHECK(v0[0] < -5.0);  // backward at the default step
+  CHECK(v0[1] > v0[0] + 5.0);
+  // Each step's study is written whole, and the coarse one is the plain study at that step.
+  for (const char* step : {"dt-1e-4", "dt-5e-5"}) {
+    const CsvTable summary = read_csv(scratch / "lively" / step / "summary.csv");
+    REQUIRE(summary.rows.size() == 1);
+    CHECK(summary.numbers(*summary.column("v0_mm_s"))[0] ==
+          v0[std::string(step) == "dt-1e-4" ? 0 : 1]);
+  }
+  auto plain = lively;
+  plain.push_back("-o");
+  plain.push_back((scratch / "plain").string());
+  REQUIRE(run_rodsort(plain, scratch.path()).status == kExitOk);
+  CsvTable coarse = read_csv(scratch / "lively" / "dt-1e-4" / "summary.csv");
+  CsvTable alone = read_csv(scratch / "plain" / "summary.csv");
+  const std::size_t cpu = *coarse.column("cpu_s");
+  coarse.rows[0][cpu] = alone.rows[0][cpu] = "";
+  CHECK(coarse.rows == alone.rows);
+
+  // Without noise at the paper's restitutions rod A's gait holds from 5e-5 to 2.5e-5 s.
+  const auto steady = run_rodsort(
+      {"single", kSingleRods, "--species", "A", "--rods", "6", "--duration", "4", "--warmup", "1",
+       "--set", "species[0].noise.kick_eps=0", "--set", "run.dt=5e-5", "--dt-halvings", "1"},
+      scratch.path());
+  REQUIRE(steady.status == kExitOk);
+  CHECK_THAT(steady.out, Catch::Contains("\nsettled between run.dt = 5e-5 and 2.5e-5 s"));
+
+  const auto too_many =
+      run_rodsort({"single", kSingleRods, "--duration", "2", "--dt-halvings", "7"}, scratch.path());
+  CHECK(too_many.status == kExitUsage);
+  CHECK_THAT(too_many.err, Catch::Contains("--dt-halvings"));
 }
 
 TEST_CASE("rodsort single refuses what it cannot measure", "[runner][single]") {
