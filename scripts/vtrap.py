@@ -1,7 +1,7 @@
 """The V trap's inside, as the metrics layer decides it (trap/v_trap.cpp, VTrap::contains), the
-blocks of a run's scenario.resolved.yaml that say where it is, the held rods, and the spheres of
-trajectory.dump's last frame, for the Python scripts beside this file:
-`from vtrap import inside_trap, resolved_block`."""
+blocks of a run's scenario.resolved.yaml that say where it is, the held rods, the rods' frames in
+the plane from rods.h5, and the spheres of trajectory.dump's last frame, for the Python scripts
+beside this file: `from vtrap import inside_trap, resolved_block`."""
 import json
 import math
 import sys
@@ -36,6 +36,16 @@ def held_rods(inside, unwrapped, lag, distance):
         moved = np.linalg.norm(unwrapped[lag:] - unwrapped[:-lag], axis=-1)
         held[lag:] = inside[lag:] & (moved < distance)
     return held
+
+
+def planar_frames(rods, frames, box):
+    """Wrapped and unwrapped centres and in-plane axes, each [frames, rods, 2], of the frames
+    `frames` (an index array or a slice) of rods.h5's particles/rods group; `box` is the cell's
+    [x, y] side."""
+    position = rods["position/value"][frames, :, :2].astype(float)
+    unwrapped = position + rods["image/value"][frames, :, :2] * box
+    axis = rods["orientation/value"][frames, :, :2].astype(float)
+    return position, unwrapped, axis
 
 
 def resolved_block(text, name):
