@@ -346,17 +346,26 @@ void warn_unconverged_kick(const SpeciesSpec& species, double dt, Diagnostics& d
 }
 
 /// An RnT outline moved off the preset's, its step from mid-length to 3 mm, has a gait that can
-/// change with dt (docs/model.md, "Where the RnT's step lies", item 4, and "The clearance to the
-/// lid", item 7): a thin radius of 0.4 mm with the step at 2.25 mm runs forward at 22.8 mm/s at
-/// dt = 1e-4 s and shuttles, mostly backward, from 1.25e-5 s on; RnT 1.0 mm thick runs in 54% of
-/// its windows at 1e-4 s and in 75% at 2.5e-5 s. The preset's own outline is left unwarned: its
-/// speed moves by 20% with dt, its gait does not; as are short thick parts, steady at every dt.
-void warn_unconverged_step(const SpeciesSpec& species, double dt, Diagnostics& diagnostics) {
-  constexpr double kLargestConvergedDt = 1.25e-5;        // [s]
+/// change with dt and with the contact solve (docs/model.md, "Where the RnT's step lies", items 4
+/// and 5, and "The clearance to the lid", item 7): a thin radius of 0.4 mm with the step at
+/// 2.25 mm runs forward at 22.8 mm/s at dt = 1e-4 s, shuttles from 1.25e-5 s on with the default
+/// ten sweeps, and runs steadily backward at 6.25e-6 s with 30 sweeps or more or the exact solve,
+/// where 1.25e-5 s with 100 or 300 sweeps leaves it standing; RnT 1.0 mm thick runs in 54% of its
+/// windows at 1e-4 s and in 75% at 2.5e-5 s. The preset's own outline is left unwarned: its speed
+/// moves by 20% with dt, its gait does not; as are short thick parts, steady at every dt.
+void warn_unconverged_step(const SpeciesSpec& species, const engine::Model& model,
+                           Diagnostics& diagnostics) {
+  constexpr double kLargestConvergedDt = 6.25e-6;  // [s]
+  constexpr int kFewestConvergedSweeps = 30;
   constexpr double kMidLength = engine::kRntLength / 2;  // the preset's step [mm]
   constexpr double kLongThickPart = 3.0;  // from here on the rod lies level and rattles [mm]
   const ShapeSpec& shape = species.shape;
-  if (!is_rnt_preset(species) || dt <= kLargestConvergedDt * (1.0 + 1e-9)) return;
+  const bool converged_solve =
+      model.exact_contact_solver || model.solver_iterations >= kFewestConvergedSweeps;
+  if (!is_rnt_preset(species) ||
+      (model.dt <= kLargestConvergedDt * (1.0 + 1e-9) && converged_solve)) {
+    return;
+  }
   const double step = shape.step.value;
   if (step < kMidLength - 1e-9 || step >= kLongThickPart) return;
   const bool preset_outline = std::abs(step - kMidLength) < 1e-9 &&
@@ -366,15 +375,17 @@ void warn_unconverged_step(const SpeciesSpec& species, double dt, Diagnostics& d
   const Sourced<double>& key = shape.step.given          ? shape.step
                                : shape.thin_radius.given ? shape.thin_radius
                                                          : shape.thick_radius;
-  diagnostics.warning(key.where, key.path,
-                      "an RnT outline other than the preset's (thick_radius " +
-                          mm(shape.thick_radius.value) + ", thin_radius " +
-                          mm(shape.thin_radius.value) + ", step " + mm(step) +
-                          ") may change its gait with run.dt = " + format_real(dt) +
-                          " s, as the step study's did from the step at mid-length to 3 mm "
-                          "(docs/model.md, \"Where the RnT's step lies\"; thin_radius 0.4 mm with "
-                          "the step at 2.25 mm runs forward at 1e-4 s and shuttles backward from "
-                          "1.25e-5 s); check its gait with rodsort single at run.dt = 1.25e-5 s");
+  diagnostics.warning(
+      key.where, key.path,
+      "an RnT outline other than the preset's (thick_radius " + mm(shape.thick_radius.value) +
+          ", thin_radius " + mm(shape.thin_radius.value) + ", step " + mm(step) +
+          ") may change its gait with run.dt = " + format_real(model.dt) + " s and " +
+          std::to_string(model.solver_iterations) +
+          " solver sweeps, as the step study's did from the step at mid-length to 3 mm "
+          "(docs/model.md, \"Where the RnT's step lies\"; thin_radius 0.4 mm with the step at "
+          "2.25 mm runs forward at 1e-4 s, shuttles at 1.25e-5 s with ten sweeps, and runs "
+          "backward at 6.25e-6 s with 30); check its gait with rodsort single at "
+          "run.dt = 6.25e-6 s and run.solver_iterations = 30");
 }
 
 /// An RnT whose thin part lies off its axis, or that is bent, changes its gait with dt
@@ -699,7 +710,7 @@ std::optional<Scenario> compile(const ScenarioSpec& spec, Diagnostics& diagnosti
   for (std::size_t i = 0; i < spec.species.size(); ++i) {
     const SpeciesSpec& species = spec.species[i];
     warn_unconverged_kick(species, model.dt, diagnostics);
-    warn_unconverged_step(species, model.dt, diagnostics);
+    warn_unconverged_step(species, model, diagnostics);
     warn_unconverged_off_axis(species, model.dt, diagnostics);
     engine::Species out;
     out.name = species.name.value;

@@ -118,8 +118,9 @@ std::vector<KeyInfo> scenario_keys() {
        "Where the RnT preset's single step lies, from its thick tip (RnT only; the paper gives no "
        "figure, mid-length by default). From thick_radius + sqrt(thick_radius^2 - thin_radius^2) "
        "to 3.5 - thin_radius: one whole sphere on each side. Moved back from mid-length (to 3 mm), or "
-       "with other radii, RnT's gait may change with run.dt, and validate warns above "
-       "run.dt = 1.25e-5 s (docs/model.md, \"Where the RnT's step lies\")."},
+       "with other radii, RnT's gait may change with run.dt and the solver's sweeps, and validate "
+       "warns above run.dt = 6.25e-6 s or below 30 sweeps (docs/model.md, \"Where the RnT's step "
+       "lies\")."},
       {"species[].shape.thin_offset", V::real, "mm", "0", non_negative(), {},
        "How far the RnT preset's thin part lies off the thick part's axis, parallel to it (RnT "
        "only): 0, the paper's straight rod, by default. At most thick_radius - thin_radius, so "

@@ -379,7 +379,7 @@ TEST_CASE("RnT outlines whose gait changes with dt are warned about at a large d
       coarse.diagnostics[0].to_string(),
       Catch::Contains("s.yaml:1:66: warning: species[0].shape.step: an RnT outline other than "
                       "the preset's (thick_radius 0.55 mm, thin_radius 0.4 mm, step 2.25 mm) may "
-                      "change its gait with run.dt = 1e-4 s"));
+                      "change its gait with run.dt = 1e-4 s and 10 solver sweeps"));
   // Only the thin radius moved, the step left at mid-length: the warning names thin_radius.
   const LoadResult thin = load_scenario_text(rnt(", thin_radius: 0.2"), "s.yaml");
   REQUIRE(thin.diagnostics.size() == 1);
@@ -390,10 +390,20 @@ TEST_CASE("RnT outlines whose gait changes with dt are warned about at a large d
   CHECK_THAT(thick.diagnostics[0].to_string(),
              Catch::Contains("species[0].shape.thick_radius: an RnT outline other than the "
                              "preset's (thick_radius 0.5 mm, thin_radius 0.3 mm, step 1.75 mm)"));
-  // Resolved at 1.25e-5 s; the preset's own outline, written out or not; a short thick part,
-  // which runs steadily at every dt; a long one, which lies level and rattles.
-  CHECK(load_scenario_text(rnt(", thin_radius: 0.4, step: 2.25") + "run: {dt: 1.25e-5}\n", "s.yaml")
+  // Resolved at 6.25e-6 s with 30 sweeps or the exact solve, and neither at 1.25e-5 s nor with
+  // ten sweeps; the preset's own outline, written out or not; a short thick part, which runs
+  // steadily at every dt; a long one, which lies level and rattles.
+  const std::string shuttling = rnt(", thin_radius: 0.4, step: 2.25");
+  CHECK(load_scenario_text(shuttling + "run: {dt: 6.25e-6, solver_iterations: 30}\n", "s.yaml")
             .diagnostics.empty());
+  // (the exact solve is warned of for ten rods, as for any crowd, but not for the outline)
+  const LoadResult exact =
+      load_scenario_text(shuttling + "run: {dt: 6.25e-6, contact_solver: exact}\n", "s.yaml");
+  REQUIRE(exact.diagnostics.size() == 1);
+  CHECK_THAT(exact.diagnostics[0].to_string(), Catch::Contains("run.contact_solver: exact"));
+  CHECK(load_scenario_text(shuttling + "run: {dt: 6.25e-6}\n", "s.yaml").diagnostics.size() == 1);
+  CHECK(load_scenario_text(shuttling + "run: {dt: 1.25e-5, solver_iterations: 100}\n", "s.yaml")
+            .diagnostics.size() == 1);
   CHECK(load_scenario_text(rnt(""), "s.yaml").diagnostics.empty());
   CHECK(load_scenario_text(rnt(", thick_radius: 0.55, thin_radius: 0.3, step: 1.75"), "s.yaml")
             .diagnostics.empty());
