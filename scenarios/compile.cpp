@@ -375,13 +375,15 @@ void warn_unconverged_step(const SpeciesSpec& species, const engine::Model& mode
   const Sourced<double>& key = shape.step.given          ? shape.step
                                : shape.thin_radius.given ? shape.thin_radius
                                                          : shape.thick_radius;
+  const std::string solve = model.exact_contact_solver
+                                ? std::string("the exact solve")
+                                : std::to_string(model.solver_iterations) + " solver sweeps";
   diagnostics.warning(
       key.where, key.path,
       "an RnT outline other than the preset's (thick_radius " + mm(shape.thick_radius.value) +
           ", thin_radius " + mm(shape.thin_radius.value) + ", step " + mm(step) +
-          ") may change its gait with run.dt = " + format_real(model.dt) + " s and " +
-          std::to_string(model.solver_iterations) +
-          " solver sweeps, as the step study's did from the step at mid-length to 3 mm "
+          ") may change its gait with run.dt = " + format_real(model.dt) + " s and " + solve +
+          ", as the step study's did from the step at mid-length to 3 mm "
           "(docs/model.md, \"Where the RnT's step lies\"; thin_radius 0.4 mm with the step at "
           "2.25 mm runs forward at 1e-4 s, shuttles at 1.25e-5 s with ten sweeps, and runs "
           "backward at 6.25e-6 s with 30); check its gait with rodsort single at "
