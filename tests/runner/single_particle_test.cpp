@@ -134,6 +134,38 @@ TEST_CASE("at a 1.31 mm gap a lone RnT goes backward in about a fifth of its win
   CHECK(backward < 0.192 + 0.06);
 }
 
+// docs/model.md, "Where the RnT's step lies", item 8: an RnT with a thin half 0.4 mm thick from
+// 1.3 mm, solved to convergence, breaks its mirror symmetry and circles at 1.5-1.8 rad/s and
+// 3.2-3.3 mm/s (8 rods x 15-30 s at dt = 3.125e-6, 6.25e-6 and 1.25e-5 s, 30 and 100 sweeps;
+// 7 of 8 rods each time, both senses). Rod 0 starts with its axis along x, on a mirror plane of
+// the cell to the last bit, and keeps that symmetry: it never turns. About 7 CPU-s.
+TEST_CASE("a straight RnT can break its mirror symmetry and circle either way",
+          "[runner][single][physics]") {
+  TempDirectory scratch;
+  const auto out = scratch / "study";
+  const auto result = run_rodsort(
+      {"single", kSingleRods, "--species", "RnT", "--set", "species[1].shape.thin_radius=0.2",
+       "--set", "species[1].shape.step=1.3", "--set", "run.dt=1.25e-5", "--set",
+       "run.solver_iterations=30", "--rods", "4", "--duration", "6", "-o", out.string()},
+      scratch.path());
+  INFO(result.err << result.out);
+  REQUIRE(result.status == kExitOk);
+  const CsvTable per_rod = read_csv(out / "per_rod.csv");
+  const std::vector<double> turn = per_rod.numbers(*per_rod.column("turn_rate_rad_s"));
+  const std::vector<double> circles = per_rod.numbers(*per_rod.column("circles"));
+  const std::vector<double> v0 = per_rod.numbers(*per_rod.column("v0_mm_s"));
+  REQUIRE(turn.size() == 4);
+  CHECK(turn[0] == 0.0);
+  CHECK(circles[0] == 0.0);
+  for (std::size_t rod = 1; rod < turn.size(); ++rod) {
+    INFO("rod " << rod << ": turn rate " << turn[rod] << " rad/s, v0 " << v0[rod] << " mm/s");
+    CHECK(circles[rod] == 1.0);
+    CHECK(std::abs(turn[rod]) > 1.2);
+    CHECK(std::abs(turn[rod]) < 2.2);
+    CHECK(std::abs(v0[rod] - 3.3) < 0.3);
+  }
+}
+
 namespace {
 
 // One rod's track in rods.csv: time, unwrapped centre and in-plane axis per frame.
