@@ -1,6 +1,6 @@
 """The V trap's inside, as the metrics layer decides it (trap/v_trap.cpp, VTrap::contains), the
 blocks of a run's scenario.resolved.yaml that say where it is, the held rods, the rods' frames in
-the plane from rods.h5, and the spheres of trajectory.dump's last frame, for the Python scripts
+the plane from rods.h5 (planar_frames) or from a run's rods.csv or rods.h5 (read_frames), and the spheres of trajectory.dump's last frame, for the Python scripts
 beside this file: `from vtrap import inside_trap, resolved_block`."""
 import json
 import math
@@ -88,3 +88,51 @@ def last_dump_frame(path):
         spheres.setdefault(int(row["mol"]) - 1, []).append(
             tuple(float(row[k]) for k in ("x", "y", "z", "radius")))
     return spheres
+
+
+def read_csv(path):
+    """Times, species names [rods], centres, unwrapped centres and in-plane axes [frames, rods, 2]
+    of rods.csv."""
+    try:
+        with open(path) as stream:
+            header = stream.readline().strip().split(",")
+    except OSError as error:
+        sys.exit(f"{path}: {error.strerror}")
+    wanted = ["t", "species", "x", "y", "xu", "yu", "ux", "uy"]
+    missing = [c for c in wanted if c not in header]
+    if missing:
+        sys.exit(f"{path}: no column {', '.join(missing)}")
+    columns = [header.index(c) for c in wanted]
+    data = np.genfromtxt(path, delimiter=",", skip_header=1, usecols=columns, dtype=None,
+                         encoding=None, names=wanted)
+    data = np.atleast_1d(data)
+    times = np.unique(data["t"])
+    if len(times) < 2 or len(data) % len(times):
+        sys.exit(f"{path}: needs at least two whole frames")
+    frames = data.reshape(len(times), len(data) // len(times))
+    pair = lambda a, b: np.stack([frames[a], frames[b]], -1).astype(float)
+    return (times, frames["species"][0], pair("x", "y"), pair("xu", "yu"),
+            pair("ux", "uy"))
+
+
+def read_h5(path, names):
+    """As read_csv, from rods.h5 (H5MD); `names` are the species' names by index."""
+    try:
+        import h5py
+    except ImportError as error:
+        sys.exit(f"{path}: reading it needs h5py (Debian's python3-h5py): {error}")
+    rods = h5py.File(path, "r")["particles/rods"]
+    times = rods["position/time"][:]
+    if len(times) < 2:
+        sys.exit(f"{path}: needs at least two whole frames")
+    edges = rods["box/edges/value"][0]
+    box = np.array([edges[0, 0], edges[1, 1]])
+    position, unwrapped, axis = planar_frames(rods, slice(None), box)
+    species = np.array([names[k] for k in rods["species"][:]])
+    return times, species, position, unwrapped, axis
+
+
+def read_frames(run, text):
+    if (run / "rods.csv").exists() or not (run / "rods.h5").exists():
+        return read_csv(run / "rods.csv")
+    return read_h5(run / "rods.h5", species_names(text))
