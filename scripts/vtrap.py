@@ -1,7 +1,8 @@
 """The V trap's inside, as the metrics layer decides it (trap/v_trap.cpp, VTrap::contains), the
 blocks of a run's scenario.resolved.yaml that say where it is, the held rods, the rods' frames in
-the plane from rods.h5 (planar_frames) or from a run's rods.csv or rods.h5 (read_frames), and the spheres of trajectory.dump's last frame, for the Python scripts
-beside this file: `from vtrap import inside_trap, resolved_block`."""
+the plane from rods.h5 (planar_frames) or from a run's rods.csv or rods.h5 (read_frames), and the
+spheres of trajectory.dump's last frame, for the Python scripts beside this file:
+`from vtrap import inside_trap, resolved_block`."""
 import json
 import math
 import sys
@@ -133,6 +134,8 @@ def read_h5(path, names):
 
 
 def read_frames(run, text):
+    """As read_csv, from the run's rods.csv, or from its rods.h5 where it wrote no rods.csv; `text`
+    is its scenario.resolved.yaml."""
     if (run / "rods.csv").exists() or not (run / "rods.h5").exists():
         return read_csv(run / "rods.csv")
     return read_h5(run / "rods.h5", species_names(text))
